@@ -1,0 +1,206 @@
+/*
+ * draw_ps.c - PostScript back end: a DSC-conforming file (one %%Page per
+ * page) that ghostscript and printers accept.  Coordinates are printed
+ * with two decimals through one function, so output is identical
+ * everywhere; no %%CreationDate is written.
+ */
+#include "draw.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* A coordinate rounded to 0.01 pt, trailing zeros dropped, no "-0". */
+static void pnum(FILE *f, double v)
+{
+	char buf[40];
+	double r = round(v * 100) / 100;
+	if (r == 0 || fabs(r) < 0.005)
+		r = 0;
+	snprintf(buf, sizeof buf, "%.2f", r);
+	char *dot = strchr(buf, '.');
+	if (dot) {
+		char *e = buf + strlen(buf) - 1;
+		while (e > dot && *e == '0')
+			*e-- = '\0';
+		if (e == dot)
+			*e = '\0';
+	}
+	fputs(buf, f);
+}
+
+static void ps_string(FILE *f, const char *s)
+{
+	fputc('(', f);
+	for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+		if (*p == '(' || *p == ')' || *p == '\\')
+			fprintf(f, "\\%c", *p);
+		else if (*p < 32 || *p > 126)
+			fprintf(f, "\\%03o", *p);
+		else
+			fputc(*p, f);
+	}
+	fputc(')', f);
+}
+
+static void set_style(FILE *f, const struct draw_item *it, int *cur_lt,
+		      double *cur_w, double *cur_g)
+{
+	if (it->linetype != *cur_lt) {
+		double dash[6];
+		int n = draw_dash(it->linetype, dash);
+		fputc('[', f);
+		for (int i = 0; i < n; i++) {
+			if (i)
+				fputc(' ', f);
+			pnum(f, dash[i]);
+		}
+		fputs("] 0 setdash\n", f);
+		*cur_lt = it->linetype;
+	}
+	if (it->width != *cur_w) {
+		pnum(f, it->width);
+		fputs(" setlinewidth\n", f);
+		*cur_w = it->width;
+	}
+	if (it->gray != *cur_g) {
+		pnum(f, it->gray);
+		fputs(" setgray\n", f);
+		*cur_g = it->gray;
+	}
+}
+
+static void path(FILE *f, const struct draw_item *it)
+{
+	for (int i = 0; i < it->n; i++) {
+		pnum(f, it->xy[2 * i]);
+		fputc(' ', f);
+		pnum(f, it->xy[2 * i + 1]);
+		fputs(i == 0 ? " m" : " l", f);
+		fputc((i % 6 == 5 || i == it->n - 1) ? '\n' : ' ', f);
+	}
+}
+
+static const char prolog[] =
+	"%%BeginProlog\n"
+	"/m {moveto} bind def /l {lineto} bind def\n"
+	"/S {stroke} bind def\n"
+	"% gray F: fill the current path with a gray, keeping the path\n"
+	"/F {gsave setgray fill grestore} bind def\n"
+	"% str x y size angle halign valign T: aligned, rotated text\n"
+	"/T {/va exch def /ha exch def /an exch def /sz exch def\n"
+	"  gsave translate an rotate /Helvetica findfont sz scalefont setfont\n"
+	"  dup stringwidth pop ha 1 add 2 div neg mul\n"
+	"  sz 0.72 mul va 1 add 2 div neg mul moveto show grestore} bind def\n"
+	"1 setlinejoin 1 setlinecap\n"
+	"%%EndProlog\n";
+
+void draw_write_ps(const struct draw *d, const char *path_name, const struct draw_ps_opts *o)
+{
+	struct aout *a = aout_open(path_name);
+	FILE *f = a->f;
+	double scale = o && o->scale > 0 ? o->scale : 1.0;
+	int land = o && o->landscape;
+	int npages = d->npages ? d->npages : 1;
+	fputs("%!PS-Adobe-3.0\n", f);
+	fputs("%%Creator: sample3d\n", f);
+	if (o && o->title) {
+		fputs("%%Title: ", f);
+		for (const char *p = o->title; *p; p++)
+			fputc((*p >= 32 && *p < 127) ? *p : '?', f);
+		fputc('\n', f);
+	}
+	fprintf(f, "%%%%BoundingBox: 0 0 %d %d\n", (int)DRAW_PAGE_W, (int)DRAW_PAGE_H);
+	fprintf(f, "%%%%Pages: %d\n", npages);
+	fprintf(f, "%%%%Orientation: %s\n", land ? "Landscape" : "Portrait");
+	fputs("%%EndComments\n", f);
+	fputs(prolog, f);
+	int it = 0;
+	for (int p = 0; p < npages; p++) {
+		fprintf(f, "%%%%Page: %d %d\n", p + 1, p + 1);
+		fputs("save\n", f);
+		if (land) {
+			/* the drawing's page (w x h) is laid on its side */
+			pnum(f, DRAW_PAGE_W);
+			fputs(" 0 translate 90 rotate\n", f);
+		}
+		if (scale != 1.0) {
+			double cw = land ? DRAW_PAGE_H : DRAW_PAGE_W;
+			double ch = land ? DRAW_PAGE_W : DRAW_PAGE_H;
+			pnum(f, cw / 2 * (1 - scale));
+			fputc(' ', f);
+			pnum(f, ch / 2 * (1 - scale));
+			fputs(" translate ", f);
+			fprintf(f, "%.4f dup scale\n", scale);
+		}
+		int lt = -1, clipped = 0;
+		double w = -1, g = -1;
+		for (; it < d->nitems && d->items[it].page == p; it++) {
+			const struct draw_item *e = &d->items[it];
+			switch (e->kind) {
+			case DRAW_LINE:
+				set_style(f, e, &lt, &w, &g);
+				path(f, e);
+				fputs("S\n", f);
+				break;
+			case DRAW_POLY:
+				path(f, e);
+				fputs("closepath", f);
+				if (e->fill >= 0) {
+					fputc(' ', f);
+					pnum(f, e->fill);
+					fputs(" F", f);
+				}
+				if (e->linetype) {
+					fputc('\n', f);
+					set_style(f, e, &lt, &w, &g);
+					fputs("S\n", f);
+				} else {
+					fputs(" newpath\n", f);
+				}
+				break;
+			case DRAW_TEXT:
+				set_style(f, e, &lt, &w, &g);
+				ps_string(f, e->text);
+				fputc(' ', f);
+				pnum(f, e->xy[0]);
+				fputc(' ', f);
+				pnum(f, e->xy[1]);
+				fputc(' ', f);
+				pnum(f, e->size);
+				fputc(' ', f);
+				pnum(f, e->angle);
+				fprintf(f, " %d %d T\n", e->halign, e->valign);
+				break;
+			case DRAW_CLIP:
+				if (clipped) {
+					/* grestore brings back the style of before the
+					 * clip: force it out again */
+					fputs("grestore\n", f);
+					lt = -1, w = -1, g = -1;
+				}
+				fputs("gsave newpath ", f);
+				pnum(f, e->xy[0]); fputc(' ', f);
+				pnum(f, e->xy[1]); fputc(' ', f);
+				pnum(f, e->xy[2] - e->xy[0]); fputc(' ', f);
+				pnum(f, e->xy[3] - e->xy[1]);
+				fputs(" rectclip\n", f);
+				clipped = 1;
+				break;
+			case DRAW_UNCLIP:
+				if (clipped) {
+					fputs("grestore\n", f);
+					clipped = 0;
+					lt = -1, w = -1, g = -1;
+				}
+				break;
+			}
+		}
+		if (clipped)
+			fputs("grestore\n", f);
+		fputs("restore\nshowpage\n", f);
+	}
+	fputs("%%Trailer\n%%EOF\n", f);
+	aout_commit(a);
+}

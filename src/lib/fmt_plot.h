@@ -1,0 +1,63 @@
+/*
+ * fmt_plot.h - the plot files of pdraw(L) (3D) and drawplot(L) (2D, the
+ * SAMPLE plot format).  A file holds one or more sets (one graph each):
+ *
+ *   xmin xmax ymin ymax [zmin zmax]
+ *   ncurves
+ *   npts                 per curve, then npts lines "x y [z]"
+ *
+ * Sets follow each other, separated by a blank line when written.  Counts
+ * may be written as "4.0"; commas may separate numbers (image.cont of
+ * contour -c writes "xmin, xmax, ymin, ymax").  See man/man5/plot3d.5
+ * and plot2d.5.
+ *
+ * Two ways to write: build a struct plot_file and call fmt_plot_write,
+ * or stream large outputs (etch) set by set with fmt_plot_open.
+ */
+#ifndef S3D_FMT_PLOT_H
+#define S3D_FMT_PLOT_H
+
+#include <stddef.h>
+
+enum { PLOT_MAX_COUNT = 2000000000 };
+
+struct plot_curve {
+	int npts;
+	double *p;          /* npts * dim coordinates, point after point */
+};
+
+struct plot_set {
+	double bounds[6];   /* xmin xmax ymin ymax [zmin zmax] */
+	int ncurves;
+	struct plot_curve *curves;
+	size_t cap;         /* allocated curves */
+};
+
+struct plot_file {
+	int dim;            /* 2 or 3 */
+	int nsets;
+	struct plot_set *sets;
+	size_t cap;
+};
+
+struct plot_file *fmt_plot_new(int dim);
+/* Appends an empty set with the given bounds (dim*2 values). */
+struct plot_set *fmt_plot_add_set(struct plot_file *pf, const double *bounds);
+/* Appends a curve of npts points (copied from p, npts*dim values). */
+void fmt_plot_add_curve(struct plot_file *pf, struct plot_set *s, int npts,
+			const double *p);
+/* Reads a 2D (dim 2) or 3D (dim 3) plot file. */
+struct plot_file *fmt_plot_read(const char *path, int dim);
+void fmt_plot_write(const char *path, const struct plot_file *pf);
+void fmt_plot_free(struct plot_file *pf);
+
+/* Streaming writer. */
+struct plot_writer;
+struct plot_writer *fmt_plot_open(const char *path, int dim);
+/* Starts a set: its bounds and how many curves will follow. */
+void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurves);
+void fmt_plot_curve(struct plot_writer *w, int npts, const double *p);
+/* Checks the counts promised, commits the file (atomic rename). */
+void fmt_plot_close(struct plot_writer *w);
+
+#endif

@@ -1,0 +1,387 @@
+/*
+ * fmt_rate.c - see fmt_rate.h.  Binary layout (all little-endian):
+ *
+ *   8   magic "\x89RVAL3D\n" (the high byte and newline catch text-mode
+ *       transfers, as PNG's signature does)
+ *   4   version (1)
+ *   4   narrays
+ *   12  nx ny nz (uint32)
+ *   48  xmin xmax ymin ymax zmin zmax (IEEE-754 binary64)
+ *   8*narrays  array names, NUL-padded
+ *   8*nx*ny*nz*narrays  the arrays, one after another
+ *   4   CRC-32 of every byte before it
+ *
+ * The ASCII form:
+ *   RVAL3D 1
+ *   nx ny nz narrays
+ *   xmin xmax ymin ymax zmin zmax
+ *   then per array: its name on a line, then its values, nx per line.
+ */
+#include "fmt_rate.h"
+#include "lex.h"
+#include "num.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+_Static_assert(sizeof(double) == 8, "binary64 doubles required");
+
+static const char *bound_names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+
+unsigned long fmt_crc32(unsigned long crc, const void *data, size_t len)
+{
+	static uint32_t table[256];
+	static int ready;
+	if (!ready) {
+		for (uint32_t n = 0; n < 256; n++) {
+			uint32_t c = n;
+			for (int k = 0; k < 8; k++)
+				c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+			table[n] = c;
+		}
+		ready = 1;
+	}
+	const unsigned char *p = data;
+	uint32_t c = (uint32_t)crc ^ 0xFFFFFFFFu;
+	for (size_t i = 0; i < len; i++)
+		c = table[(c ^ p[i]) & 0xFF] ^ (c >> 8);
+	return c ^ 0xFFFFFFFFu;
+}
+
+static size_t npoints(const struct ratefile *r)
+{
+	return (size_t)r->nx * (size_t)r->ny * (size_t)r->nz;
+}
+
+struct ratefile *fmt_rate_new(int nx, int ny, int nz, const double b[6])
+{
+	struct ratefile *r = xcalloc(1, sizeof *r);
+	r->nx = nx, r->ny = ny, r->nz = nz;
+	r->xmin = b[0], r->xmax = b[1], r->ymin = b[2];
+	r->ymax = b[3], r->zmin = b[4], r->zmax = b[5];
+	fmt_rate_add_array(r, "rate");
+	return r;
+}
+
+double *fmt_rate_add_array(struct ratefile *r, const char *name)
+{
+	if (r->narrays >= RATE_MAX_ARRAYS)
+		die("internal error: more than %d arrays in a rate file", RATE_MAX_ARRAYS);
+	if (strlen(name) > RATE_NAME_LEN || !*name)
+		die("internal error: bad rate array name \"%s\"", name);
+	struct rate_array *a = &r->arrays[r->narrays++];
+	memset(a->name, 0, sizeof a->name);
+	memcpy(a->name, name, strlen(name));
+	a->v = xcalloc(npoints(r), sizeof *a->v);
+	return a->v;
+}
+
+double *fmt_rate_array(const struct ratefile *r, const char *name)
+{
+	for (int i = 0; i < r->narrays; i++)
+		if (strcmp(r->arrays[i].name, name) == 0)
+			return r->arrays[i].v;
+	return NULL;
+}
+
+double fmt_rate_x(const struct ratefile *r, int i) { return r->xmin + (r->xmax - r->xmin) * i / (r->nx - 1); }
+double fmt_rate_y(const struct ratefile *r, int j) { return r->ymin + (r->ymax - r->ymin) * j / (r->ny - 1); }
+double fmt_rate_z(const struct ratefile *r, int k) { return r->zmin + (r->zmax - r->zmin) * k / (r->nz - 1); }
+
+void fmt_rate_free(struct ratefile *r)
+{
+	if (!r)
+		return;
+	for (int i = 0; i < r->narrays; i++)
+		free(r->arrays[i].v);
+	free(r);
+}
+
+/* ---- shared validation ---- */
+
+static const char *check_header(const struct ratefile *r)
+{
+	if (!(r->xmax > r->xmin)) return "xmax must be greater than xmin";
+	if (!(r->ymax > r->ymin)) return "ymax must be greater than ymin";
+	if (!(r->zmax > r->zmin)) return "zmax must be greater than zmin";
+	return NULL;
+}
+
+static int valid_name(const char *s)
+{
+	size_t n = strlen(s);
+	if (n == 0 || n > RATE_NAME_LEN)
+		return 0;
+	for (size_t i = 0; i < n; i++)
+		if (!((s[i] >= 'a' && s[i] <= 'z') || (s[i] >= 'A' && s[i] <= 'Z') ||
+		      (s[i] >= '0' && s[i] <= '9') || s[i] == '_'))
+			return 0;
+	return 1;
+}
+
+/* ---- little-endian helpers ---- */
+
+static uint32_t get_u32(const unsigned char *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+static double get_f64(const unsigned char *p)
+{
+	uint64_t u = 0;
+	for (int i = 7; i >= 0; i--)
+		u = u << 8 | p[i];
+	double d;
+	memcpy(&d, &u, 8);
+	return d;
+}
+
+static void put_u32(unsigned char *p, uint32_t v)
+{
+	for (int i = 0; i < 4; i++)
+		p[i] = (unsigned char)(v >> (8 * i));
+}
+
+static void put_f64(unsigned char *p, double d)
+{
+	uint64_t u;
+	memcpy(&u, &d, 8);
+	for (int i = 0; i < 8; i++)
+		p[i] = (unsigned char)(u >> (8 * i));
+}
+
+enum { HDR_FIXED = 8 + 4 + 4 + 12 + 48 };
+
+static struct ratefile *read_binary(const char *name, const unsigned char *buf, size_t len)
+{
+	/* binary files have no lines; report offset 1 as ":0" would confuse */
+	if (len < HDR_FIXED + 4)
+		die("%s:1: truncated binary rate file (%zu bytes)", name, len);
+	uint32_t version = get_u32(buf + 8);
+	if (version != RATE_VERSION)
+		die("%s:1: binary rate file version %lu, this program reads version %d",
+		    name, (unsigned long)version, RATE_VERSION);
+	uint32_t na = get_u32(buf + 12);
+	uint32_t n[3] = {get_u32(buf + 16), get_u32(buf + 20), get_u32(buf + 24)};
+	if (na < 1 || na > RATE_MAX_ARRAYS)
+		die("%s:1: bad array count %lu in binary rate file", name, (unsigned long)na);
+	for (int d = 0; d < 3; d++)
+		if (n[d] < 2 || n[d] > RATE_MAX_N)
+			die("%s:1: bad grid size %lu in binary rate file", name, (unsigned long)n[d]);
+	/* the exact length the header implies, computed without overflow
+	 * (each factor is below 2^20 and na below 8) */
+	uint64_t pts = (uint64_t)n[0] * n[1] * n[2];
+	uint64_t need = HDR_FIXED + 8ull * na + 8ull * pts * na + 4;
+	if ((uint64_t)len != need)
+		die("%s:1: binary rate file is %zu bytes, its header says %llu "
+		    "(truncated or corrupt)", name, len, (unsigned long long)need);
+	uint32_t crc = get_u32(buf + len - 4);
+	if (fmt_crc32(0, buf, len - 4) != crc)
+		die("%s:1: checksum mismatch: the binary rate file is corrupt", name);
+
+	struct ratefile *r = xcalloc(1, sizeof *r);
+	r->nx = (int)n[0], r->ny = (int)n[1], r->nz = (int)n[2];
+	double b[6];
+	for (int k = 0; k < 6; k++) {
+		b[k] = get_f64(buf + 28 + 8 * k);
+		if (!isfinite(b[k])) {
+			free(r);
+			die("%s:1: %s is not a finite number", name, bound_names[k]);
+		}
+	}
+	r->xmin = b[0], r->xmax = b[1], r->ymin = b[2], r->ymax = b[3], r->zmin = b[4], r->zmax = b[5];
+	const char *err = check_header(r);
+	if (err) {
+		free(r);
+		die("%s:1: %s", name, err);
+	}
+	const unsigned char *p = buf + HDR_FIXED;
+	for (uint32_t a = 0; a < na; a++, p += 8) {
+		char nm[RATE_NAME_LEN + 1];
+		memcpy(nm, p, 8);
+		nm[8] = '\0';
+		if (!valid_name(nm)) {
+			fmt_rate_free(r);
+			die("%s:1: bad array name in binary rate file", name);
+		}
+		memcpy(r->arrays[a].name, nm, sizeof nm);
+		r->arrays[a].v = NULL;
+		r->narrays = (int)a + 1;
+	}
+	size_t np = (size_t)pts;
+	for (uint32_t a = 0; a < na; a++) {
+		double *v = xreallocarray(NULL, np, sizeof *v);
+		r->arrays[a].v = v;
+		for (size_t i = 0; i < np; i++, p += 8) {
+			v[i] = get_f64(p);
+			if (!isfinite(v[i])) {
+				char an[RATE_NAME_LEN + 1];
+				memcpy(an, r->arrays[a].name, sizeof an);
+				fmt_rate_free(r);
+				die("%s:1: value %zu of array %s is not finite", name, i + 1, an);
+			}
+		}
+	}
+	return r;
+}
+
+static struct ratefile *read_ascii(struct lex *lx)
+{
+	const char *t = lex_token(lx);
+	if (!t || strcmp(t, RATE_MAGIC_ASCII) != 0)
+		lex_error(lx, "not a rate file: expected \"%s\" or the binary magic",
+			  RATE_MAGIC_ASCII);
+	long version = lex_count(lx, "version", 0, 1000000);
+	if (version != RATE_VERSION)
+		lex_error(lx, "rate file version %ld, this program reads version %d",
+			  version, RATE_VERSION);
+	long n[3];
+	n[0] = lex_count(lx, "nx", 2, RATE_MAX_N);
+	n[1] = lex_count(lx, "ny", 2, RATE_MAX_N);
+	n[2] = lex_count(lx, "nz", 2, RATE_MAX_N);
+	long na = lex_count(lx, "narrays", 1, RATE_MAX_ARRAYS);
+	double b[6];
+	for (int k = 0; k < 6; k++)
+		b[k] = lex_number(lx, bound_names[k]);
+	struct ratefile hdr = {0};
+	hdr.xmin = b[0], hdr.xmax = b[1], hdr.ymin = b[2], hdr.ymax = b[3], hdr.zmin = b[4], hdr.zmax = b[5];
+	const char *err = check_header(&hdr);
+	if (err)
+		lex_error(lx, "%s", err);
+	/* values are grown as they arrive: a header claiming 2^60 points
+	 * allocates only what the file holds */
+	uint64_t pts64 = (uint64_t)n[0] * (uint64_t)n[1] * (uint64_t)n[2];
+	if (pts64 > SIZE_MAX / 8)
+		lex_error(lx, "grid of %llu points is too large", (unsigned long long)pts64);
+	size_t pts = (size_t)pts64;
+	struct rate_array arr[RATE_MAX_ARRAYS];
+	memset(arr, 0, sizeof arr);
+	for (long a = 0; a < na; a++) {
+		t = lex_token(lx);
+		if (!t || !valid_name(t)) {
+			for (long q = 0; q < a; q++)
+				free(arr[q].v);
+			lex_error(lx, "expected the name of array %ld", a + 1);
+		}
+		for (long q = 0; q < a; q++)
+			if (strcmp(arr[q].name, t) == 0) {
+				for (long w = 0; w < a; w++)
+					free(arr[w].v);
+				lex_error(lx, "array \"%s\" given twice", t);
+			}
+		strcpy(arr[a].name, t);
+		size_t cap = 0;
+		for (size_t i = 0; i < pts; i++) {
+			t = lex_token(lx);
+			double v;
+			if (!t || !num_parse(t, &v)) {
+				for (long q = 0; q <= a; q++)
+					free(arr[q].v);
+				if (!t)
+					lex_error(lx, "truncated: array %s has %zu of %zu values",
+						  arr[a].name, i, pts);
+				lex_error(lx, "expected value %zu of array %s (a finite number)",
+					  i + 1, arr[a].name);
+			}
+			xgrow(&arr[a].v, &cap, i + 1, sizeof(double));
+			arr[a].v[i] = v;
+		}
+	}
+	if (!lex_at_end(lx)) {
+		for (long q = 0; q < na; q++)
+			free(arr[q].v);
+		lex_token(lx);
+		lex_error(lx, "unexpected data after the last array");
+	}
+	struct ratefile *r = xcalloc(1, sizeof *r);
+	*r = hdr;
+	r->nx = (int)n[0], r->ny = (int)n[1], r->nz = (int)n[2];
+	r->narrays = (int)na;
+	memcpy(r->arrays, arr, sizeof arr);
+	return r;
+}
+
+struct ratefile *fmt_rate_read(const char *path)
+{
+	size_t len;
+	unsigned char *buf = lex_slurp(path, &len);
+	const char *name = strcmp(path, "-") == 0 ? "stdin" : path;
+	struct ratefile *r;
+	if (len >= 8 && memcmp(buf, RATE_MAGIC_BIN, 8) == 0) {
+		r = read_binary(name, buf, len);
+		free(buf);
+	} else {
+		struct lex *lx = lex_from_memory(name, buf, len);
+		free(buf);
+		r = read_ascii(lx);
+		lex_close(lx);
+	}
+	return r;
+}
+
+static void write_ascii(FILE *f, const struct ratefile *r)
+{
+	fprintf(f, "%s %d\n%d %d %d %d\n", RATE_MAGIC_ASCII, RATE_VERSION,
+		r->nx, r->ny, r->nz, r->narrays);
+	double b[6] = {r->xmin, r->xmax, r->ymin, r->ymax, r->zmin, r->zmax};
+	num_print_row(f, b, 6);
+	size_t np = npoints(r);
+	for (int a = 0; a < r->narrays; a++) {
+		fprintf(f, "%s\n", r->arrays[a].name);
+		for (size_t i = 0; i < np; i += (size_t)r->nx)
+			num_print_row(f, r->arrays[a].v + i, r->nx);
+	}
+}
+
+static void write_binary(FILE *f, const struct ratefile *r)
+{
+	unsigned char hdr[HDR_FIXED + 8 * RATE_MAX_ARRAYS];
+	memset(hdr, 0, sizeof hdr);
+	memcpy(hdr, RATE_MAGIC_BIN, 8);
+	put_u32(hdr + 8, RATE_VERSION);
+	put_u32(hdr + 12, (uint32_t)r->narrays);
+	put_u32(hdr + 16, (uint32_t)r->nx);
+	put_u32(hdr + 20, (uint32_t)r->ny);
+	put_u32(hdr + 24, (uint32_t)r->nz);
+	double b[6] = {r->xmin, r->xmax, r->ymin, r->ymax, r->zmin, r->zmax};
+	for (int k = 0; k < 6; k++)
+		put_f64(hdr + 28 + 8 * k, b[k]);
+	for (int a = 0; a < r->narrays; a++)
+		memcpy(hdr + HDR_FIXED + 8 * a, r->arrays[a].name, strlen(r->arrays[a].name));
+	size_t hlen = HDR_FIXED + 8 * (size_t)r->narrays;
+	unsigned long crc = fmt_crc32(0, hdr, hlen);
+	fwrite(hdr, 1, hlen, f);
+	unsigned char chunk[8 * 1024];
+	size_t np = npoints(r);
+	for (int a = 0; a < r->narrays; a++) {
+		size_t used = 0;
+		for (size_t i = 0; i < np; i++) {
+			put_f64(chunk + used, r->arrays[a].v[i]);
+			used += 8;
+			if (used == sizeof chunk || i + 1 == np) {
+				crc = fmt_crc32(crc, chunk, used);
+				fwrite(chunk, 1, used, f);
+				used = 0;
+			}
+		}
+	}
+	unsigned char tail[4];
+	put_u32(tail, (uint32_t)crc);
+	fwrite(tail, 1, 4, f);
+}
+
+void fmt_rate_write(const char *path, const struct ratefile *r, int ascii)
+{
+	const char *err = check_header(r);
+	if (err)
+		die("%s: internal error: %s", path, err);
+	struct aout *a = aout_open(path);
+	if (ascii)
+		write_ascii(a->f, r);
+	else
+		write_binary(a->f, r);
+	aout_commit(a);
+}

@@ -1,0 +1,307 @@
+/*
+ * lex.c - see lex.h.  Compressed input goes through a child "gzip -dc"
+ * started with fork/exec (no shell, so any file name is safe); its exit
+ * status is checked so that a corrupt archive is an error, not a short
+ * file.
+ */
+#include "lex.h"
+#include "num.h"
+#include "util.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+struct lex {
+	char *name;
+	char *buf;
+	size_t len;
+	size_t pos;
+	long line;
+	long nextline;
+	char *tok;
+	size_t tokcap;
+	/* lex_line state */
+	char **ltok;
+	int *lquoted;
+	size_t lcap;
+	char *lbuf;
+	size_t lbufcap;
+};
+
+static int ends_with(const char *s, const char *suffix)
+{
+	size_t n = strlen(s), m = strlen(suffix);
+	return n > m && strcmp(s + n - m, suffix) == 0;
+}
+
+static char *read_fd(int fd, const char *name, size_t *len)
+{
+	size_t cap = 0, n = 0;
+	char *buf = NULL;
+	for (;;) {
+		xgrow(&buf, &cap, n + 65536 + 1, 1);
+		ssize_t r = read(fd, buf + n, cap - n - 1);
+		if (r < 0) {
+			if (errno == EINTR)
+				continue;
+			die("%s: read error:", name);
+		}
+		if (r == 0)
+			break;
+		n += (size_t)r;
+	}
+	buf[n] = '\0';
+	*len = n;
+	return buf;
+}
+
+static char *read_gzip(const char *path, size_t *len)
+{
+	int pfd[2];
+	if (pipe(pfd) != 0)
+		die("%s: cannot make a pipe:", path);
+	fflush(NULL);
+	pid_t pid = fork();
+	if (pid < 0)
+		die("%s: cannot fork gzip:", path);
+	if (pid == 0) {
+		close(pfd[0]);
+		if (dup2(pfd[1], 1) < 0)
+			_exit(126);
+		close(pfd[1]);
+		execlp("gzip", "gzip", "-dc", "--", path, (char *)NULL);
+		_exit(127);
+	}
+	close(pfd[1]);
+	char *buf = read_fd(pfd[0], path, len);
+	close(pfd[0]);
+	int st;
+	while (waitpid(pid, &st, 0) < 0)
+		if (errno != EINTR)
+			die("%s: waiting for gzip:", path);
+	if (WIFEXITED(st) && WEXITSTATUS(st) == 127)
+		die("%s: cannot run gzip to read a compressed file", path);
+	if (!WIFEXITED(st) || WEXITSTATUS(st) != 0)
+		die("%s: gzip -dc failed: corrupt or not a compressed file", path);
+	return buf;
+}
+
+void *lex_slurp(const char *path, size_t *len)
+{
+	if (strcmp(path, "-") == 0)
+		return read_fd(0, "stdin", len);
+	if (ends_with(path, ".gz") || ends_with(path, ".Z")) {
+		FILE *t = fopen(path, "rb");
+		if (!t)
+			die("%s: cannot open:", path);
+		fclose(t);
+		return read_gzip(path, len);
+	}
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		die("%s: cannot open:", path);
+	char *buf = read_fd(fileno(f), path, len);
+	fclose(f);
+	return buf;
+}
+
+static struct lex *lex_new(const char *name, char *buf, size_t len)
+{
+	struct lex *lx = xcalloc(1, sizeof *lx);
+	lx->name = xstrdup(name);
+	lx->buf = buf;
+	lx->len = len;
+	lx->line = 1;
+	lx->nextline = 1;
+	return lx;
+}
+
+struct lex *lex_open(const char *path)
+{
+	size_t len;
+	char *buf = lex_slurp(path, &len);
+	return lex_new(strcmp(path, "-") == 0 ? "stdin" : path, buf, len);
+}
+
+struct lex *lex_from_memory(const char *name, const void *data, size_t len)
+{
+	char *buf = xmalloc(len + 1);
+	memcpy(buf, data, len);
+	buf[len] = '\0';
+	return lex_new(name, buf, len);
+}
+
+void lex_close(struct lex *lx)
+{
+	if (!lx)
+		return;
+	free(lx->name);
+	free(lx->buf);
+	free(lx->tok);
+	free(lx->ltok);
+	free(lx->lquoted);
+	free(lx->lbuf);
+	free(lx);
+}
+
+const char *lex_name(const struct lex *lx) { return lx->name; }
+long lex_lineno(const struct lex *lx) { return lx->line; }
+
+void lex_error(const struct lex *lx, const char *fmt, ...)
+{
+	char msg[512];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	die("%s:%ld: %s", lx->name, lx->line, msg);
+}
+
+static int is_sep(int c)
+{
+	return c == ' ' || c == '\t' || c == '\n' || c == '\r' ||
+	       c == '\f' || c == '\v' || c == ',';
+}
+
+static void skip_sep(struct lex *lx)
+{
+	while (lx->pos < lx->len && is_sep((unsigned char)lx->buf[lx->pos])) {
+		if (lx->buf[lx->pos] == '\n')
+			lx->nextline++;
+		lx->pos++;
+	}
+}
+
+const char *lex_token(struct lex *lx)
+{
+	skip_sep(lx);
+	if (lx->pos >= lx->len)
+		return NULL;
+	size_t start = lx->pos;
+	while (lx->pos < lx->len && !is_sep((unsigned char)lx->buf[lx->pos]))
+		lx->pos++;
+	size_t n = lx->pos - start;
+	xgrow(&lx->tok, &lx->tokcap, n + 1, 1);
+	memcpy(lx->tok, lx->buf + start, n);
+	lx->tok[n] = '\0';
+	lx->line = lx->nextline;
+	return lx->tok;
+}
+
+int lex_at_end(struct lex *lx)
+{
+	skip_sep(lx);
+	return lx->pos >= lx->len;
+}
+
+/* A token quoted for a message: printable, at most 24 characters. */
+static const char *shown(const char *t, char *out, size_t cap)
+{
+	size_t j = 0;
+	for (size_t i = 0; t[i] && j + 4 < cap && i < 24; i++)
+		out[j++] = (t[i] >= 32 && t[i] < 127) ? t[i] : '?';
+	if (strlen(t) > 24 && j + 4 < cap)
+		out[j++] = '.', out[j++] = '.', out[j++] = '.';
+	out[j] = '\0';
+	return out;
+}
+
+double lex_number(struct lex *lx, const char *what)
+{
+	const char *t = lex_token(lx);
+	if (!t) {
+		lx->line = lx->nextline;
+		lex_error(lx, "expected %s, found end of file", what);
+	}
+	double v;
+	if (!num_parse(t, &v)) {
+		char s[40];
+		lex_error(lx, "expected %s (a finite number), found \"%s\"",
+			  what, shown(t, s, sizeof s));
+	}
+	return v;
+}
+
+long lex_count(struct lex *lx, const char *what, long min, long max)
+{
+	const char *t = lex_token(lx);
+	if (!t) {
+		lx->line = lx->nextline;
+		lex_error(lx, "expected %s, found end of file", what);
+	}
+	long v;
+	if (!num_parse_count(t, min, max, &v)) {
+		char s[40];
+		lex_error(lx, "expected %s (a whole number from %ld to %ld), found \"%s\"",
+			  what, min, max, shown(t, s, sizeof s));
+	}
+	return v;
+}
+
+int lex_line(struct lex *lx, char ***tokens, const int **quoted)
+{
+	for (;;) {
+		if (lx->pos >= lx->len)
+			return 0;
+		size_t start = lx->pos;
+		while (lx->pos < lx->len && lx->buf[lx->pos] != '\n')
+			lx->pos++;
+		size_t n = lx->pos - start;
+		if (lx->pos < lx->len)
+			lx->pos++; /* the newline */
+		lx->line = lx->nextline++;
+		xgrow(&lx->lbuf, &lx->lbufcap, n + 1, 1);
+		memcpy(lx->lbuf, lx->buf + start, n);
+		lx->lbuf[n] = '\0';
+
+		size_t nt = 0;
+		char *p = lx->lbuf;
+		for (;;) {
+			while (*p == ' ' || *p == '\t' || *p == '\r' ||
+			       *p == '\f' || *p == '\v')
+				p++;
+			if (!*p || *p == '#')
+				break;
+			int q = *p == '"';
+			char *t = q ? ++p : p;
+			if (q) {
+				while (*p && *p != '"')
+					p++;
+				if (!*p)
+					lex_error(lx, "unterminated quoted string");
+			} else {
+				while (*p && *p != ' ' && *p != '\t' && *p != '\r' &&
+				       *p != '\f' && *p != '\v' && *p != '#')
+					p++;
+			}
+			char c = *p;
+			*p = '\0';
+			xgrow(&lx->ltok, &lx->lcap, nt + 1, sizeof *lx->ltok);
+			size_t qcap = lx->lcap;
+			lx->lquoted = xreallocarray(lx->lquoted, qcap, sizeof *lx->lquoted);
+			lx->ltok[nt] = t;
+			lx->lquoted[nt] = q;
+			nt++;
+			if (q)
+				p++;
+			else if (c == '#')
+				break; /* a comment right after a word */
+			else if (c)
+				p++;
+			else
+				break;
+		}
+		if (nt == 0)
+			continue;
+		*tokens = lx->ltok;
+		if (quoted)
+			*quoted = lx->lquoted;
+		return (int)nt;
+	}
+}

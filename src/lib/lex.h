@@ -1,0 +1,52 @@
+/*
+ * lex.h - the one input reader behind every file format.
+ *
+ * A whole input is read into memory first (a file, "-" for stdin, or a
+ * .gz/.Z file through "gzip -dc"), so that readers can check sizes against
+ * what the input really holds before allocating.  Two ways to consume it:
+ *   - tokens (numeric formats): whitespace and commas separate fields;
+ *   - lines (keyword formats): '#' starts a comment, "quoted strings" are
+ *     one token.
+ * Every error names the file and line: "prog: file:line: what is wrong".
+ */
+#ifndef S3D_LEX_H
+#define S3D_LEX_H
+
+#include <stddef.h>
+
+struct lex;     /* opaque */
+
+/* The name shown in messages and the line of the last token returned. */
+const char *lex_name(const struct lex *lx);
+long lex_lineno(const struct lex *lx);
+
+/* Reads all of path ("-" is stdin); dies if it cannot. */
+struct lex *lex_open(const char *path);
+/* Wraps a memory buffer (copied); name is used in messages. */
+struct lex *lex_from_memory(const char *name, const void *data, size_t len);
+void lex_close(struct lex *lx);
+
+/* Reads the whole of path into a malloc'd buffer (gzip-aware); the caller
+ * frees it.  Used for binary formats. */
+void *lex_slurp(const char *path, size_t *len);
+
+/* Next whitespace/comma-separated token, or NULL at end of input. */
+const char *lex_token(struct lex *lx);
+/* 1 if only whitespace remains. */
+int lex_at_end(struct lex *lx);
+/* Next token as a finite number; dies "expected WHAT" otherwise. */
+double lex_number(struct lex *lx, const char *what);
+/* Next token as a count in [min, max] ("4.0" accepted). */
+long lex_count(struct lex *lx, const char *what, long min, long max);
+
+/* Next non-empty line split into tokens (comments stripped, quotes
+ * removed from quoted tokens).  Returns the token count, 0 at end of
+ * input.  The pointers stay valid until the next call.  quoted[i] tells
+ * whether token i was quoted (NULL allowed). */
+int lex_line(struct lex *lx, char ***tokens, const int **quoted);
+
+/* Dies with "prog: file:line: message" at the current line. */
+_Noreturn void lex_error(const struct lex *lx, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+
+#endif

@@ -1,0 +1,59 @@
+/*
+ * util.h - error reporting, checked allocation, stream shutdown and
+ * atomic output files, shared by every program of the suite.
+ *
+ * Design: programs are one-shot filters, so a fatal error simply prints
+ * one line and exits (netpbm's pm_error, suckless' eprintf).  Output files
+ * are written to a temporary beside the target and renamed on success;
+ * die() removes every temporary still open, so a failure never leaves a
+ * half-written file nor destroys the previous one.
+ */
+#ifndef S3D_UTIL_H
+#define S3D_UTIL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+/* Exit statuses: 1 for a run-time failure, 2 for a usage error. */
+enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+/* Sets the name used as the "prog: " prefix of every message. */
+void util_setprog(const char *argv0);
+const char *util_prog(void);
+
+/* "prog: message\n" on stderr and exit(1).  A format ending in ':'
+ * appends strerror(errno). */
+_Noreturn void die(const char *fmt, ...)
+	__attribute__((format(printf, 1, 2)));
+/* The same with an explicit exit status (EXIT_USAGE for usage errors). */
+_Noreturn void die_status(int status, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+/* "prog: message\n" on stderr, no exit. */
+void warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+void *xmalloc(size_t size);
+void *xcalloc(size_t count, size_t size);
+/* realloc of count * size bytes, dying on overflow or exhaustion. */
+void *xreallocarray(void *p, size_t count, size_t size);
+char *xstrdup(const char *s);
+/* Grows *p (holding *cap elements of size) to at least need elements,
+ * doubling; dies on overflow. */
+void xgrow(void *pp, size_t *cap, size_t need, size_t size);
+
+/* Flushes and closes f, dying with "name: write error:" if anything
+ * failed on the way (full disk, broken pipe).  stdout is flushed and
+ * checked but not closed. */
+void fshut(FILE *f, const char *name);
+
+/* Atomic output file: writes go to a temporary beside path; aout_commit
+ * checks every write and the close, then renames over path. */
+struct aout {
+	FILE *f;        /* write here */
+	char *path;     /* the target ("-" for stdout) */
+	char *tmp;      /* the temporary, NULL for stdout */
+};
+struct aout *aout_open(const char *path);
+void aout_commit(struct aout *a);   /* dies on any error; frees a */
+void aout_abort(struct aout *a);    /* removes the temporary; frees a */
+
+#endif

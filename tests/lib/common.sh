@@ -1,0 +1,50 @@
+# tests/lib/common.sh - helpers for shell tests; source it with
+#   . "$TOP/tests/lib/common.sh"
+# Every helper prints what went wrong and exits 1 on failure.
+
+fail() { echo "FAIL: $*"; exit 1; }
+skip() { echo "skipped: $*"; exit 77; }
+
+# expect_error PROG ARGS...: the command must exit non-zero, print exactly
+# one line on stderr starting "PROG: ", and not crash (no signal, no
+# sanitizer report).
+expect_error() {
+	prog=$1
+	"$@" </dev/null >/dev/null 2>err.txt
+	st=$?
+	[ $st -ne 0 ] || fail "$* succeeded, expected an error"
+	[ $st -lt 90 ] || fail "$* crashed or was flagged by a sanitizer (exit $st): $(head -c 600 err.txt)"
+	n=$(wc -l <err.txt)
+	[ "$n" -eq 1 ] || fail "$*: expected one line on stderr, got $n: $(head -c 600 err.txt)"
+	grep -q "^$prog: " err.txt || fail "$*: message does not start '$prog: ': $(cat err.txt)"
+}
+
+# expect_file_error PROG FILE ARGS...: as expect_error, and the message names
+# FILE and a line number "FILE:N:".
+expect_file_error() {
+	prog=$1 file=$2
+	shift 2
+	expect_error "$prog" "$@"
+	grep -q "^$prog: $file:[0-9][0-9]*: " err.txt ||
+		fail "$prog $*: message does not name $file:line: $(cat err.txt)"
+}
+
+# same FILE1 FILE2: byte-identical.
+same() { cmp -s "$1" "$2" || { diff "$1" "$2" | head -20; fail "$1 and $2 differ"; }; }
+
+# close A B TOL [what]: |A - B| <= TOL.
+close() {
+	awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }' ||
+		fail "${4:-value}: $1 is not within $3 of $2"
+}
+
+# need TOOL: skip the test when TOOL is not installed.
+need() { command -v "$1" >/dev/null 2>&1 || skip "$1 is not installed"; }
+
+# gs_check FILE.ps: ghostscript renders every page without an error.
+gs_check() {
+	need gs
+	gs -q -dSAFER -dBATCH -dNOPAUSE -sDEVICE=nullpage "$1" >gs.out 2>&1 </dev/null ||
+		fail "ghostscript failed on $1: $(head -c 600 gs.out)"
+	! grep -q "Error" gs.out || fail "ghostscript reported on $1: $(head -c 600 gs.out)"
+}
