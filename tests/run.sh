@@ -29,7 +29,7 @@ trap 'rm -rf "$work"' EXIT INT TERM
 
 pass=0 fail=0 skip=0 failed=""
 list=$( (cd "$TOP" && ls tests/*/*.sh 2>/dev/null | grep -v '^tests/\(lib\|bench\)/';
-         cd "$BUILD" && ls tests/*/* 2>/dev/null) | sort)
+         cd "$BUILD" && ls tests/*/* 2>/dev/null | grep -v '^tests/\(lib\|bench\)/') | sort)
 for t in $list; do
 	name=${t#tests/}
 	case $name in *.sh) ;; *) [ -x "$BUILD/$t" ] || continue ;; esac
