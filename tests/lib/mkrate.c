@@ -229,7 +229,7 @@ int main(int argc, char **argv)
 			ascii = 1;
 		else if (args_str(&a, "-o", &out) || args_str(&a, "-M", &mexpr))
 			;
-		else if (s[0] == '-' && isalpha((unsigned char)s[1]))
+		else if (s[0] == '-' && isalpha((unsigned char)s[1]) && npos != 9)
 			args_unknown(&a);
 		else if (npos < 10)
 			pos[npos++] = argv[a.i++];
