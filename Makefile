@@ -36,6 +36,9 @@ ifeq ($(HAVE_X11),yes)
 X11_CPPFLAGS = -DHAVE_X11
 X11_LIBS     = -lX11
 endif
+# every link gets it: the library's preview module may be pulled in by any
+# program or test that draws
+LDLIBS  += $(X11_LIBS)
 
 LIB_SRC  := $(wildcard src/lib/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -76,7 +79,7 @@ $(foreach p,$(DIR_PROGS),$(eval $(call dir_prog,$(p))))
 
 $(BUILD)/bin/%: $(BUILD)/src/plot/%.o $(PLOT_SHARE_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(PLOT_SHARE_OBJ) $(LIB) $(X11_LIBS) $(LDLIBS)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(PLOT_SHARE_OBJ) $(LIB) $(LDLIBS)
 
 $(BUILD)/bin/sample3D: scripts/sample3D.sh
 	@mkdir -p $(dir $@)
@@ -87,7 +90,7 @@ $(BUILD)/bin/sample3D: scripts/sample3D.sh
 .SECONDEXPANSION:
 $(BUILD)/tests/%: tests/%.c $(LIB) $$(filter-out %/main.o,$$(patsubst %.c,$(BUILD)/%.o,$$(wildcard src/$$(firstword $$(subst /, ,$$*))/*.c)))
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(WARN) $(CFLAGS) -Isrc/$(firstword $(subst /, ,$*)) -o $@ $< \
+	$(CC) $(CPPFLAGS) $(X11_CPPFLAGS) $(WARN) $(CFLAGS) $(LDFLAGS) -Isrc/$(firstword $(subst /, ,$*)) -o $@ $< \
 		$(filter-out %/main.o,$(patsubst %.c,$(BUILD)/%.o,$(wildcard src/$(firstword $(subst /, ,$*))/*.c))) \
 		$(LIB) $(LDLIBS)
 

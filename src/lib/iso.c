@@ -1,0 +1,196 @@
+/*
+ * iso.c - marching tetrahedra (see iso.h).
+ *
+ * Closing the surface at the box: the grid is padded, virtually, by one
+ * layer of points a hair (PAD_REL of a cell) outside the box faces, with
+ * the value +infinity.  A crossing between a face point and the pad then
+ * falls exactly on the face point (t = (level - f) / inf = 0), so the cap,
+ * which adjoining faces share along the box edges, is
+ * the part of the face where f < level, triangulated consistently with the
+ * interior.  The pad's thickness keeps the tetrahedra non-degenerate, so
+ * the orientation test below stays exact: for a linear function on a
+ * tetrahedron, the centroid of the points above the level lies above the
+ * centroid of those below, and the triangle normal is parallel to the
+ * gradient; walls of the pad (zero area once snapped) are dropped.
+ */
+#include "iso.h"
+
+#include <math.h>
+#include <stddef.h>
+
+struct grid {
+	const double *f;
+	int n[3];
+	const double *b;
+	double level;
+	int closed;
+};
+
+/* value and position of (padded) grid point i, j, k */
+/* the pad's distance outside the box, as a fraction of a cell: small
+ * enough that snapping moves no visible point, large enough that the
+ * padded tetrahedra are far from degenerate in double precision */
+#define PAD_REL 1e-6
+
+static double at(const struct grid *g, const int idx[3], double p[3])
+{
+	int out = 0;
+	for (int d = 0; d < 3; d++) {
+		int i = idx[d];
+		double h = (g->b[2 * d + 1] - g->b[2 * d]) / (g->n[d] - 1), off = 0;
+		if (i < 0) { i = 0; out = 1; off = -PAD_REL * h; }
+		if (i >= g->n[d]) { i = g->n[d] - 1; out = 1; off = PAD_REL * h; }
+		/* the same expression as fmt_rate_x and fmt_contour_x */
+		p[d] = g->b[2 * d] + (g->b[2 * d + 1] - g->b[2 * d]) * i / (g->n[d] - 1) + off;
+	}
+	if (out)
+		return INFINITY; /* crossings towards the pad fall on the face point */
+	size_t k = ((size_t)idx[2] * (size_t)g->n[1] + (size_t)idx[1]) * (size_t)g->n[0] + (size_t)idx[0];
+	return g->f[k];
+}
+
+static void lerp(const double *a, double fa, const double *b, double fb, double level, double *out)
+{
+	if (isinf(fa) || isinf(fb)) {   /* a pad point: the crossing is its partner */
+		const double *c = isinf(fa) ? b : a;
+		for (int d = 0; d < 3; d++)
+			out[d] = c[d];
+		return;
+	}
+	double t = (level - fa) / (fb - fa);
+	for (int d = 0; d < 3; d++)
+		out[d] = a[d] + t * (b[d] - a[d]);
+}
+
+static double area2(const double *t)
+{
+	double u[3], v[3];
+	for (int d = 0; d < 3; d++) {
+		u[d] = t[3 + d] - t[d];
+		v[d] = t[6 + d] - t[d];
+	}
+	double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+	return sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+}
+
+/* emits tri, flipped if needed so its normal points along up */
+static long out(double *tri, const double *up, iso_emit emit, void *ctx, double scale,
+		const double *b)
+{
+	if (b)  /* snap crossings in the pad onto the box faces */
+		for (int q = 0; q < 3; q++)
+			for (int d = 0; d < 3; d++)
+				tri[3 * q + d] = fmin(fmax(tri[3 * q + d], b[2 * d]), b[2 * d + 1]);
+	double u[3], v[3];
+	for (int d = 0; d < 3; d++) {
+		u[d] = tri[3 + d] - tri[d];
+		v[d] = tri[6 + d] - tri[d];
+	}
+	double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+	/* relative threshold: triangles that the pad layer squeezes to a line */
+	if (area2(tri) <= 1e-12 * scale * scale)
+		return 0;
+	if (c[0] * up[0] + c[1] * up[1] + c[2] * up[2] < 0)
+		for (int d = 0; d < 3; d++) {
+			double s = tri[3 + d];
+			tri[3 + d] = tri[6 + d];
+			tri[6 + d] = s;
+		}
+	emit(ctx, tri);
+	return 1;
+}
+
+static long tet(const double p[4][3], const double v[4], double level,
+		iso_emit emit, void *ctx, double scale, const double *box)
+{
+	int in[4], nin = 0;
+	for (int i = 0; i < 4; i++) {
+		in[i] = v[i] < level;
+		nin += in[i];
+	}
+	if (nin == 0 || nin == 4)
+		return 0;
+	/* "up": from the centroid of the points below to those above */
+	double cb[3] = {0, 0, 0}, ca[3] = {0, 0, 0}, up[3];
+	for (int i = 0; i < 4; i++)
+		for (int d = 0; d < 3; d++) {
+			if (in[i])
+				cb[d] += p[i][d] / nin;
+			else
+				ca[d] += p[i][d] / (4 - nin);
+		}
+	for (int d = 0; d < 3; d++)
+		up[d] = ca[d] - cb[d];
+	double tri[9];
+	if (nin == 1 || nin == 3) {
+		int lone = 0;
+		for (int i = 0; i < 4; i++)
+			if (in[i] == (nin == 1))
+				lone = i;
+		int m = 0;
+		for (int i = 0; i < 4; i++)
+			if (i != lone)
+				lerp(p[lone], v[lone], p[i], v[i], level, tri + 3 * m++);
+		return out(tri, up, emit, ctx, scale, box);
+	}
+	/* two in, two out: a quadrilateral a0-b0, a0-b1, a1-b1, a1-b0 */
+	int a[2], b[2], na = 0, nb = 0;
+	for (int i = 0; i < 4; i++) {
+		if (in[i])
+			a[na++] = i;
+		else
+			b[nb++] = i;
+	}
+	double q[4][3];
+	lerp(p[a[0]], v[a[0]], p[b[0]], v[b[0]], level, q[0]);
+	lerp(p[a[0]], v[a[0]], p[b[1]], v[b[1]], level, q[1]);
+	lerp(p[a[1]], v[a[1]], p[b[1]], v[b[1]], level, q[2]);
+	lerp(p[a[1]], v[a[1]], p[b[0]], v[b[0]], level, q[3]);
+	long n = 0;
+	for (int d = 0; d < 3; d++) {
+		tri[d] = q[0][d], tri[3 + d] = q[1][d], tri[6 + d] = q[2][d];
+	}
+	n += out(tri, up, emit, ctx, scale, box);
+	for (int d = 0; d < 3; d++) {
+		tri[d] = q[0][d], tri[3 + d] = q[2][d], tri[6 + d] = q[3][d];
+	}
+	n += out(tri, up, emit, ctx, scale, box);
+	return n;
+}
+
+long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6],
+		 double level, int closed, iso_emit emit, void *ctx)
+{
+	struct grid g = {f, {nx, ny, nz}, bounds, level, closed};
+	/* the six tetrahedra of the Kuhn split: 0, e_a, e_a+e_b, 1 for each
+	 * order (a, b, c) of the axes; corners numbered x + 2y + 4z */
+	static const int kuhn[6][4] = {
+		{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7},
+		{0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7},
+	};
+	double scale = 0;
+	for (int d = 0; d < 3; d++)
+		scale = fmax(scale, (bounds[2 * d + 1] - bounds[2 * d]) / (g.n[d] - 1));
+	int lo = closed ? -1 : 0;
+	long count = 0;
+	for (int k = lo; k < nz - 1 - lo; k++)
+		for (int j = lo; j < ny - 1 - lo; j++)
+			for (int i = lo; i < nx - 1 - lo; i++) {
+				double cp[8][3], cv[8];
+				for (int c = 0; c < 8; c++) {
+					int idx[3] = {i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)};
+					cv[c] = at(&g, idx, cp[c]);
+				}
+				for (int t = 0; t < 6; t++) {
+					double p[4][3], v[4];
+					for (int q = 0; q < 4; q++) {
+						for (int d = 0; d < 3; d++)
+							p[q][d] = cp[kuhn[t][q]][d];
+						v[q] = cv[kuhn[t][q]];
+					}
+					count += tet((const double (*)[3])p, v, level, emit, ctx, scale,
+						     closed ? bounds : NULL);
+				}
+			}
+	return count;
+}

@@ -1,0 +1,28 @@
+/*
+ * iso.h - isosurfaces of a scalar on a regular 3D grid, by marching
+ * tetrahedra.  Used for bleach's mxyz.solid.3D (surfaces of constant M,
+ * thesis Figure 8.15) and the fast-marching engine's developed surface
+ * T = t.
+ *
+ * Each grid cell is split into six tetrahedra around its (0,0,0)-(1,1,1)
+ * diagonal (the Kuhn split); neighbouring cells then share their face
+ * triangulations, so the surface has no cracks, and unlike marching cubes
+ * there are no ambiguous cases.
+ */
+#ifndef S3D_ISO_H
+#define S3D_ISO_H
+
+typedef void (*iso_emit)(void *ctx, const double tri[9]);
+
+/* f: nx*ny*nz values, x fastest, then y, then z, on the grid spanning
+ * bounds (xmin xmax ymin ymax zmin zmax, both ends included).  Calls emit
+ * for every triangle of f = level (vertices p0 p1 p2 as x y z triples),
+ * oriented so that (p1-p0) x (p2-p0) points towards f > level.  A value
+ * equal to level counts as above it.  With closed != 0 the region
+ * f < level is also closed off by the box faces, so the surface is
+ * watertight.  Degenerate (zero-area) triangles are not emitted.  Order
+ * is deterministic.  Returns the number of triangles. */
+long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6],
+		 double level, int closed, iso_emit emit, void *ctx);
+
+#endif
