@@ -1,0 +1,375 @@
+/*
+ * fmt_splat.c - reader and writer of the splat input file (see
+ * fmt_splat.h and man/man5/splat.5).
+ *
+ * The file is read line by line through lex_line; every statement is
+ * checked as it is read, and the checks that need the whole file (a rect
+ * outside a window given later, a missing window) are made at the end,
+ * still naming the offending line.  SPLAT's own manual is lost (thesis
+ * 2.2.1), so the statements are ours; they keep the thesis' words
+ * ("coma 0.4 lambda at field (1,0)", thesis 9.3.3).
+ */
+#include "fmt_splat.h"
+#include "lex.h"
+#include "num.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+/* Largest grid side and cutline count: far beyond any use, small enough
+ * that nx*ny doubles cannot overflow or exhaust memory by accident. */
+enum { SPLAT_MAX_GRID = 10001, SPLAT_MAX_CUTPTS = 1000000 };
+/* Highest fringe Zernike term implemented (the usual 37-term set). */
+enum { SPLAT_MAX_ZERNIKE = 37 };
+/* Slack when checking that a rect lies inside the window, relative to
+ * the window size: inputs written with a few decimals must pass. */
+static const double WINDOW_SLACK = 1e-9;
+
+static double number(struct lex *lx, const char *kw, const char *what, const char *s)
+{
+	double v;
+	if (!num_parse(s, &v))
+		lex_error(lx, "%s: expected %s, found \"%.40s\"", kw, what, s);
+	return v;
+}
+
+static void want(struct lex *lx, const char *kw, int n, int lo, int hi, const char *form)
+{
+	if (n - 1 < lo || n - 1 > hi)
+		lex_error(lx, "%s: expected \"%s\"", kw, form);
+}
+
+static void add_aberr(struct splat_input *in, size_t *cap, enum splat_aberr_kind k,
+		      double w, double hx, double hy, int z, long line)
+{
+	xgrow(&in->aberr, cap, (size_t)in->naberr + 1, sizeof *in->aberr);
+	struct splat_aberr *a = &in->aberr[in->naberr++];
+	a->kind = k;
+	a->w = w;
+	a->hx = hx;
+	a->hy = hy;
+	a->zernike = z;
+	a->line = line;
+}
+
+/* "w field hx hy" of the field-dependent Seidel terms. */
+static void field_term(struct lex *lx, struct splat_input *in, size_t *cap,
+		       enum splat_aberr_kind k, char **tok, int n)
+{
+	if (n != 5 || strcasecmp(tok[2], "field") != 0)
+		lex_error(lx, "%s: expected \"%s w field hx hy\" (w in waves, field "
+			  "point as a fraction of the field radius)", tok[0], tok[0]);
+	double w = number(lx, tok[0], "the aberration in waves", tok[1]);
+	double hx = number(lx, tok[0], "field hx", tok[3]);
+	double hy = number(lx, tok[0], "field hy", tok[4]);
+	if (hypot(hx, hy) > 1 + 1e-12)
+		lex_error(lx, "%s: field point (%g, %g) is outside the field radius 1",
+			  tok[0], hx, hy);
+	add_aberr(in, cap, k, w, hx, hy, 0, lex_lineno(lx));
+}
+
+/* "T PHASE" pair: amplitude transmission 0..1 and phase in degrees. */
+static void trans_phase(struct lex *lx, const char *kw, const char *ts, const char *ps,
+			double *t, double *ph)
+{
+	*t = number(lx, kw, "an amplitude transmission", ts);
+	if (*t < 0 || *t > 1)
+		lex_error(lx, "%s: amplitude transmission %g is outside [0, 1]", kw, *t);
+	*ph = number(lx, kw, "a phase in degrees", ps);
+}
+
+struct splat_input *fmt_splat_read(const char *path)
+{
+	struct lex *lx = lex_open(path);
+	struct splat_input *in = xcalloc(1, sizeof *in);
+	size_t acap = 0, rcap = 0, ccap = 0;
+	int have_window = 0;
+	long window_line = 0;
+	in->wavelength = 0.436;
+	in->na = 0.28;
+	in->source = SPLAT_SRC_CIRCLE;
+	in->sigma = 0.5;
+	in->nx = in->ny = 51;
+	in->mask.bg_t = 0;
+	in->mask.bg_phase = 0;
+
+	char **tok;
+	const int *quoted;
+	int n;
+	while ((n = lex_line(lx, &tok, &quoted)) > 0) {
+		const char *kw = tok[0];
+		if (quoted[0])
+			lex_error(lx, "unknown statement \"%.40s\"", kw);
+		if (strcasecmp(kw, "wavelength") == 0) {
+			want(lx, kw, n, 1, 1, "wavelength micrometres");
+			in->wavelength = number(lx, kw, "a wavelength in micrometres", tok[1]);
+			if (!(in->wavelength > 0))
+				lex_error(lx, "wavelength must be positive");
+		} else if (strcasecmp(kw, "na") == 0) {
+			want(lx, kw, n, 1, 1, "na value");
+			in->na = number(lx, kw, "a numerical aperture", tok[1]);
+			if (!(in->na > 0 && in->na < 1))
+				lex_error(lx, "na must be in (0, 1), found %g", in->na);
+		} else if (strcasecmp(kw, "sigma") == 0) {
+			want(lx, kw, n, 1, 1, "sigma value");
+			double s = number(lx, kw, "a partial coherence", tok[1]);
+			if (s < 0)
+				lex_error(lx, "sigma must not be negative, found %g", s);
+			in->source = SPLAT_SRC_CIRCLE;
+			in->sigma = s;
+		} else if (strcasecmp(kw, "annular") == 0) {
+			want(lx, kw, n, 2, 2, "annular s_in s_out");
+			double a = number(lx, kw, "s_in", tok[1]);
+			double b = number(lx, kw, "s_out", tok[2]);
+			if (a < 0 || b <= a)
+				lex_error(lx, "annular: need 0 <= s_in < s_out, found %g %g", a, b);
+			in->source = SPLAT_SRC_ANNULAR;
+			in->s_in = a;
+			in->s_out = b;
+		} else if (strcasecmp(kw, "quadrupole") == 0 || strcasecmp(kw, "dipole") == 0) {
+			int quad = strcasecmp(kw, "quadrupole") == 0;
+			if (quad)
+				want(lx, kw, n, 2, 2, "quadrupole c r");
+			else
+				want(lx, kw, n, 2, 3, "dipole c r [x|y]");
+			double c = number(lx, kw, "the pole centre distance", tok[1]);
+			double r = number(lx, kw, "the pole radius", tok[2]);
+			if (c < 0 || r <= 0)
+				lex_error(lx, "%s: need c >= 0 and r > 0, found %g %g", kw, c, r);
+			/* the poles are added as separate discs: they must not overlap */
+			double gap = quad ? c * sqrt(2.0) : 2 * c;
+			if (gap < 2 * r)
+				lex_error(lx, "%s: poles of radius %g at distance %g overlap", kw, r, c);
+			in->dipole_y = 0;
+			if (!quad && n == 4) {
+				if (strcasecmp(tok[3], "y") == 0)
+					in->dipole_y = 1;
+				else if (strcasecmp(tok[3], "x") != 0)
+					lex_error(lx, "dipole: expected x or y, found \"%.40s\"", tok[3]);
+			}
+			in->source = quad ? SPLAT_SRC_QUADRUPOLE : SPLAT_SRC_DIPOLE;
+			in->pole_c = c;
+			in->pole_r = r;
+		} else if (strcasecmp(kw, "defocus") == 0) {
+			want(lx, kw, n, 1, 1, "defocus micrometres");
+			in->defocus = number(lx, kw, "a defocus in micrometres", tok[1]);
+		} else if (strcasecmp(kw, "coma") == 0) {
+			field_term(lx, in, &acap, SPLAT_AB_COMA, tok, n);
+		} else if (strcasecmp(kw, "astigmatism") == 0) {
+			field_term(lx, in, &acap, SPLAT_AB_ASTIGMATISM, tok, n);
+		} else if (strcasecmp(kw, "curvature") == 0) {
+			field_term(lx, in, &acap, SPLAT_AB_CURVATURE, tok, n);
+		} else if (strcasecmp(kw, "distortion") == 0) {
+			field_term(lx, in, &acap, SPLAT_AB_DISTORTION, tok, n);
+		} else if (strcasecmp(kw, "spherical") == 0) {
+			want(lx, kw, n, 1, 1, "spherical w");
+			double w = number(lx, kw, "the aberration in waves", tok[1]);
+			add_aberr(in, &acap, SPLAT_AB_SPHERICAL, w, 0, 0, 0, lex_lineno(lx));
+		} else if (strcasecmp(kw, "zernike") == 0) {
+			want(lx, kw, n, 2, 2, "zernike N c");
+			long z;
+			if (!num_parse_count(tok[1], 1, SPLAT_MAX_ZERNIKE, &z))
+				lex_error(lx, "zernike: expected a fringe term number 1 to %d, "
+					  "found \"%.40s\"", SPLAT_MAX_ZERNIKE, tok[1]);
+			double w = number(lx, kw, "a coefficient in waves", tok[2]);
+			add_aberr(in, &acap, SPLAT_AB_ZERNIKE, w, 0, 0, (int)z, lex_lineno(lx));
+		} else if (strcasecmp(kw, "background") == 0) {
+			if (n == 2 && strcasecmp(tok[1], "dark") == 0) {
+				in->mask.bg_t = 0;
+				in->mask.bg_phase = 0;
+			} else if (n == 2 && strcasecmp(tok[1], "clear") == 0) {
+				in->mask.bg_t = 1;
+				in->mask.bg_phase = 0;
+			} else if (n == 3) {
+				trans_phase(lx, kw, tok[1], tok[2], &in->mask.bg_t, &in->mask.bg_phase);
+			} else {
+				lex_error(lx, "background: expected dark, clear or \"T PHASE\"");
+			}
+		} else if (strcasecmp(kw, "rect") == 0) {
+			if (n != 5 && n != 7)
+				lex_error(lx, "rect: expected \"rect x1 y1 x2 y2 [T PHASE]\"");
+			struct splat_rect r;
+			r.x1 = number(lx, kw, "x1", tok[1]);
+			r.y1 = number(lx, kw, "y1", tok[2]);
+			r.x2 = number(lx, kw, "x2", tok[3]);
+			r.y2 = number(lx, kw, "y2", tok[4]);
+			r.t = 1;
+			r.phase = 0;
+			if (n == 7)
+				trans_phase(lx, kw, tok[5], tok[6], &r.t, &r.phase);
+			if (r.x1 > r.x2) { double t = r.x1; r.x1 = r.x2; r.x2 = t; }
+			if (r.y1 > r.y2) { double t = r.y1; r.y1 = r.y2; r.y2 = t; }
+			if (!(r.x2 > r.x1 && r.y2 > r.y1))
+				lex_error(lx, "rect: zero width or height");
+			r.line = lex_lineno(lx);
+			xgrow(&in->mask.rects, &rcap, (size_t)in->mask.nrects + 1, sizeof r);
+			in->mask.rects[in->mask.nrects++] = r;
+		} else if (strcasecmp(kw, "window") == 0) {
+			want(lx, kw, n, 4, 4, "window xmin xmax ymin ymax");
+			double w[4];
+			for (int i = 0; i < 4; i++)
+				w[i] = number(lx, kw, "a window bound", tok[i + 1]);
+			if (!(w[1] > w[0] && w[3] > w[2]))
+				lex_error(lx, "window: need xmax > xmin and ymax > ymin (zero area)");
+			in->mask.xmin = w[0];
+			in->mask.xmax = w[1];
+			in->mask.ymin = w[2];
+			in->mask.ymax = w[3];
+			have_window = 1;
+			window_line = lex_lineno(lx);
+		} else if (strcasecmp(kw, "grid") == 0) {
+			want(lx, kw, n, 2, 2, "grid nx ny");
+			long nx, ny;
+			if (!num_parse_count(tok[1], 2, SPLAT_MAX_GRID, &nx) ||
+			    !num_parse_count(tok[2], 2, SPLAT_MAX_GRID, &ny))
+				lex_error(lx, "grid: expected two counts from 2 to %d",
+					  SPLAT_MAX_GRID);
+			in->nx = (int)nx;
+			in->ny = (int)ny;
+		} else if (strcasecmp(kw, "contour") == 0) {
+			want(lx, kw, n, 1, 1, "contour FILE");
+			free(in->contour);
+			in->contour = xstrdup(tok[1]);
+			in->contour_set = 1;
+		} else if (strcasecmp(kw, "cutline") == 0) {
+			want(lx, kw, n, 6, 6, "cutline x1 y1 x2 y2 npts FILE");
+			struct splat_cutline c;
+			c.x1 = number(lx, kw, "x1", tok[1]);
+			c.y1 = number(lx, kw, "y1", tok[2]);
+			c.x2 = number(lx, kw, "x2", tok[3]);
+			c.y2 = number(lx, kw, "y2", tok[4]);
+			long np;
+			if (!num_parse_count(tok[5], 2, SPLAT_MAX_CUTPTS, &np))
+				lex_error(lx, "cutline: expected a point count from 2 to %d, "
+					  "found \"%.40s\"", SPLAT_MAX_CUTPTS, tok[5]);
+			c.npts = (int)np;
+			c.line = lex_lineno(lx);
+			xgrow(&in->cutlines, &ccap, (size_t)in->ncutlines + 1, sizeof c);
+			c.file = xstrdup(tok[6]);
+			in->cutlines[in->ncutlines++] = c;
+		} else {
+			lex_error(lx, "unknown statement \"%.40s\"", kw);
+		}
+	}
+
+	/* whole-file checks */
+	if (!have_window)
+		lex_error(lx, "no window statement (the simulation cell is required)");
+	const struct splat_mask *m = &in->mask;
+	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
+	double sy = WINDOW_SLACK * (m->ymax - m->ymin);
+	for (int i = 0; i < m->nrects; i++) {
+		const struct splat_rect *r = &m->rects[i];
+		if (r->x1 < m->xmin - sx || r->x2 > m->xmax + sx ||
+		    r->y1 < m->ymin - sy || r->y2 > m->ymax + sy)
+			die("%s:%ld: rect is outside the window of line %ld",
+			    lex_name(lx), r->line, window_line);
+	}
+	if (!in->contour)
+		in->contour = xstrdup("splat.cont");
+	lex_close(lx);
+	return in;
+}
+
+void fmt_splat_free(struct splat_input *in)
+{
+	if (!in)
+		return;
+	free(in->aberr);
+	free(in->mask.rects);
+	for (int i = 0; i < in->ncutlines; i++)
+		free(in->cutlines[i].file);
+	free(in->cutlines);
+	free(in->contour);
+	free(in);
+}
+
+static void put(FILE *f, double v)
+{
+	fputc(' ', f);
+	num_print(f, v);
+}
+
+/* A file name as one token: quoted when it holds blanks or '#'. */
+static void put_name(FILE *f, const char *s)
+{
+	if (strpbrk(s, " \t#,\"") || !*s)
+		fprintf(f, " \"%s\"", s);
+	else
+		fprintf(f, " %s", s);
+}
+
+void fmt_splat_write(const char *path, const struct splat_input *in)
+{
+	static const char *names[] = {"spherical", "coma", "astigmatism",
+				      "curvature", "distortion", "zernike"};
+	struct aout *a = aout_open(path);
+	FILE *f = a->f;
+	fputs("wavelength", f); put(f, in->wavelength); fputc('\n', f);
+	fputs("na", f); put(f, in->na); fputc('\n', f);
+	switch (in->source) {
+	case SPLAT_SRC_CIRCLE:
+		fputs("sigma", f); put(f, in->sigma);
+		break;
+	case SPLAT_SRC_ANNULAR:
+		fputs("annular", f); put(f, in->s_in); put(f, in->s_out);
+		break;
+	case SPLAT_SRC_QUADRUPOLE:
+		fputs("quadrupole", f); put(f, in->pole_c); put(f, in->pole_r);
+		break;
+	case SPLAT_SRC_DIPOLE:
+		fputs("dipole", f); put(f, in->pole_c); put(f, in->pole_r);
+		fputs(in->dipole_y ? " y" : " x", f);
+		break;
+	}
+	fputc('\n', f);
+	fputs("defocus", f); put(f, in->defocus); fputc('\n', f);
+	for (int i = 0; i < in->naberr; i++) {
+		const struct splat_aberr *ab = &in->aberr[i];
+		fputs(names[ab->kind], f);
+		if (ab->kind == SPLAT_AB_ZERNIKE)
+			fprintf(f, " %d", ab->zernike);
+		put(f, ab->w);
+		if (ab->kind != SPLAT_AB_SPHERICAL && ab->kind != SPLAT_AB_ZERNIKE) {
+			fputs(" field", f); put(f, ab->hx); put(f, ab->hy);
+		}
+		fputc('\n', f);
+	}
+	const struct splat_mask *m = &in->mask;
+	fputs("window", f); put(f, m->xmin); put(f, m->xmax); put(f, m->ymin); put(f, m->ymax);
+	fputc('\n', f);
+	fputs("background", f); put(f, m->bg_t); put(f, m->bg_phase); fputc('\n', f);
+	for (int i = 0; i < m->nrects; i++) {
+		const struct splat_rect *r = &m->rects[i];
+		fputs("rect", f); put(f, r->x1); put(f, r->y1); put(f, r->x2); put(f, r->y2);
+		put(f, r->t); put(f, r->phase); fputc('\n', f);
+	}
+	fprintf(f, "grid %d %d\n", in->nx, in->ny);
+	fputs("contour", f); put_name(f, in->contour); fputc('\n', f);
+	for (int i = 0; i < in->ncutlines; i++) {
+		const struct splat_cutline *c = &in->cutlines[i];
+		fputs("cutline", f); put(f, c->x1); put(f, c->y1); put(f, c->x2); put(f, c->y2);
+		fprintf(f, " %d", c->npts);
+		put_name(f, c->file);
+		fputc('\n', f);
+	}
+	aout_commit(a);
+}
+
+void fmt_splat_mask_at(const struct splat_mask *m, double x, double y,
+		       double *t, double *phase)
+{
+	*t = m->bg_t;
+	*phase = m->bg_phase;
+	for (int i = m->nrects - 1; i >= 0; i--) {
+		const struct splat_rect *r = &m->rects[i];
+		if (x >= r->x1 && x <= r->x2 && y >= r->y1 && y <= r->y2) {
+			*t = r->t;
+			*phase = r->phase;
+			return;
+		}
+	}
+}
