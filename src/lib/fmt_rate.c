@@ -147,6 +147,8 @@ static void put_u32(unsigned char *p, uint32_t v)
 
 static void put_f64(unsigned char *p, double d)
 {
+	if (d == 0)
+		d = 0; /* folds -0, as the ASCII form does, so both carry the same values */
 	uint64_t u;
 	memcpy(&u, &d, 8);
 	for (int i = 0; i < 8; i++)

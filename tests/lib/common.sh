@@ -1,6 +1,7 @@
 # tests/lib/common.sh - helpers for shell tests; source it with
 #   . "$TOP/tests/lib/common.sh"
-# Every helper prints what went wrong and exits 1 on failure.
+# Every helper prints what went wrong and exits 1 on failure.  Helpers'
+# own variables start with _ so they never clobber a test's.
 
 fail() { echo "FAIL: $*"; exit 1; }
 skip() { echo "skipped: $*"; exit 77; }
@@ -9,24 +10,24 @@ skip() { echo "skipped: $*"; exit 77; }
 # one line on stderr starting "PROG: ", and not crash (no signal, no
 # sanitizer report).
 expect_error() {
-	prog=$1
+	_ee_prog=$1
 	"$@" </dev/null >/dev/null 2>err.txt
-	st=$?
-	[ $st -ne 0 ] || fail "$* succeeded, expected an error"
-	[ $st -lt 90 ] || fail "$* crashed or was flagged by a sanitizer (exit $st): $(head -c 600 err.txt)"
-	n=$(wc -l <err.txt)
-	[ "$n" -eq 1 ] || fail "$*: expected one line on stderr, got $n: $(head -c 600 err.txt)"
-	grep -q "^$prog: " err.txt || fail "$*: message does not start '$prog: ': $(cat err.txt)"
+	_ee_st=$?
+	[ $_ee_st -ne 0 ] || fail "$* succeeded, expected an error"
+	[ $_ee_st -lt 90 ] || fail "$* crashed or was flagged by a sanitizer (exit $_ee_st): $(head -c 600 err.txt)"
+	_ee_n=$(wc -l <err.txt)
+	[ "$_ee_n" -eq 1 ] || fail "$*: expected one line on stderr, got $_ee_n: $(head -c 600 err.txt)"
+	grep -q "^$_ee_prog: " err.txt || fail "$*: message does not start '$_ee_prog: ': $(cat err.txt)"
 }
 
 # expect_file_error PROG FILE ARGS...: as expect_error, and the message names
 # FILE and a line number "FILE:N:".
 expect_file_error() {
-	prog=$1 file=$2
+	_ef_prog=$1 _ef_file=$2
 	shift 2
-	expect_error "$prog" "$@"
-	grep -q "^$prog: $file:[0-9][0-9]*: " err.txt ||
-		fail "$prog $*: message does not name $file:line: $(cat err.txt)"
+	expect_error "$_ef_prog" "$@"
+	grep -q "^$_ef_prog: $_ef_file:[0-9][0-9]*: " err.txt ||
+		fail "$_ef_prog $*: message does not name $_ef_file:line: $(cat err.txt)"
 }
 
 # same FILE1 FILE2: byte-identical.
