@@ -6,7 +6,7 @@
 fail() { echo "FAIL: $*"; exit 1; }
 skip() { echo "skipped: $*"; exit 77; }
 
-# expect_error PROG ARGS...: the command must exit non-zero, print exactly
+# expect_error PROG ARGS...: running "PROG ARGS" must exit non-zero, print exactly
 # one line on stderr starting "PROG: ", and not crash (no signal, no
 # sanitizer report).
 expect_error() {
@@ -20,7 +20,7 @@ expect_error() {
 	grep -q "^$_ee_prog: " err.txt || fail "$*: message does not start '$_ee_prog: ': $(cat err.txt)"
 }
 
-# expect_file_error PROG FILE ARGS...: as expect_error, and the message names
+# expect_file_error PROG FILE ARGS...: runs "PROG ARGS" as expect_error, and the message names
 # FILE and a line number "FILE:N:".
 expect_file_error() {
 	_ef_prog=$1 _ef_file=$2
