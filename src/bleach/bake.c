@@ -1,0 +1,156 @@
+/*
+ * bake.c - the post-exposure bake (thesis 8.6, Figure 8.17): the PAC
+ * diffuses, which smooths M by a Gaussian whose standard deviation is the
+ * diffusion length sqrt(2 D t).  The thesis smoothed in z only ("bake");
+ * "bake3d" smooths in x and y too.
+ *
+ * Smoothing is done exactly in the cosine/Fourier basis of the grid:
+ * the heat equation multiplies a mode of wavenumber kappa by
+ * exp(-sigma^2 kappa^2 / 2).  In z the modes are cosines (DCT-I: no flux
+ * through the resist top nor the substrate, and the trapezoidal total of
+ * M is conserved exactly); in x and y they are the Fourier modes of the
+ * periodic splat window.  Each is written as a small dense matrix, built
+ * once and applied along its axis.  The grids are short (nz ~ 300,
+ * nx ~ 50), so a matrix is both simpler and, vectorised, faster than an
+ * FFT of awkward length.  main.c smooths the dose table's rows in z
+ * rather than the full array: z smoothing is linear and commutes with
+ * the interpolation over dose, so it costs one table, not every column.
+ */
+#include "bleach.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+double *bake_matrix_neumann(int n, double d, double sigma)
+{
+	size_t nn = (size_t)n;
+	double *S = xcalloc(nn * nn, sizeof *S);
+	if (n == 1) {
+		S[0] = 1;
+		return S;
+	}
+	int N1 = n - 1, per = 2 * N1;
+	double L = N1 * d;
+	/* cos(pi q / N1) for q mod 2 N1 */
+	double *c = xreallocarray(NULL, (size_t)per, sizeof *c);
+	for (int q = 0; q < per; q++)
+		c[q] = cos(M_PI * q / N1);
+	double *g = xreallocarray(NULL, nn, sizeof *g);
+	for (int m = 0; m < n; m++) {
+		double kappa = M_PI * m / L;
+		double w = (m == 0 || m == N1) ? 0.5 : 1.0;
+		g[m] = w * exp(-0.5 * sigma * sigma * kappa * kappa) * 2.0 / N1;
+	}
+	/* S[j][l] = (2/N1) sum_m w_m g_m cos(pi m j/N1) w_l cos(pi m l/N1) */
+	for (int j = 0; j < n; j++) {
+		for (int l = j; l < n; l++) {
+			double s = 0;
+			for (int m = 0; m < n; m++) {
+				if (g[m] == 0)
+					break;  /* modes beyond underflow contribute nothing */
+				s += g[m] * c[(m * j) % per] * c[(m * l) % per];
+			}
+			S[(size_t)j * nn + l] = s;
+			S[(size_t)l * nn + j] = s;
+		}
+	}
+	/* the end weight w_l on the column: conservation of the trapezoid */
+	for (int j = 0; j < n; j++) {
+		S[(size_t)j * nn] *= 0.5;
+		S[(size_t)j * nn + N1] *= 0.5;
+	}
+	free(c);
+	free(g);
+	return S;
+}
+
+double *bake_matrix_periodic(int p, double d, double sigma)
+{
+	size_t pp = (size_t)p;
+	double *S = xcalloc(pp * pp, sizeof *S);
+	double L = p * d;
+	double *row = xcalloc(pp, sizeof *row);
+	/* circulant: row[q] = (1/p) sum_m g(m) cos(2 pi m q / p), m folded
+	 * into (-p/2, p/2] so that each mode has its true wavenumber */
+	for (int q = 0; q < p; q++) {
+		double s = 0;
+		for (int m = 0; m < p; m++) {
+			int mf = m <= p / 2 ? m : m - p;
+			double kappa = 2 * M_PI * mf / L;
+			double gm = exp(-0.5 * sigma * sigma * kappa * kappa);
+			s += gm * cos(2 * M_PI * (double)((long)m * q % p) / p);
+		}
+		row[q] = s / p;
+	}
+	for (int i = 0; i < p; i++)
+		for (int l = 0; l < p; l++)
+			S[(size_t)i * pp + l] = row[((i - l) % p + p) % p];
+	free(row);
+	return S;
+}
+
+void bake_apply(const double *S, int n, double *v, size_t stride, double *work)
+{
+	for (int i = 0; i < n; i++) {
+		const double *r = S + (size_t)i * (size_t)n;
+		double s = 0;
+		for (int l = 0; l < n; l++)
+			s += r[l] * v[(size_t)l * stride];
+		work[i] = s;
+	}
+	for (int i = 0; i < n; i++)
+		v[(size_t)i * stride] = work[i];
+}
+
+void bake_rows(double *rows, int nrows, int n, double d, double sigma)
+{
+	double *S = bake_matrix_neumann(n, d, sigma);
+	double *w = xreallocarray(NULL, (size_t)n, sizeof *w);
+	for (int r = 0; r < nrows; r++)
+		bake_apply(S, n, rows + (size_t)r * n, 1, w);
+	free(w);
+	free(S);
+}
+
+void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sigma)
+{
+	size_t plane = (size_t)nx * (size_t)ny;
+	int px = nx - 1, py = ny - 1;
+	if (px >= 1) {
+		double *S = bake_matrix_periodic(px, dx, sigma);
+		double *w = xreallocarray(NULL, (size_t)px, sizeof *w);
+		for (int k = 0; k < nz; k++)
+			for (int j = 0; j < ny; j++) {
+				double *r = f + (size_t)k * plane + (size_t)j * nx;
+				bake_apply(S, px, r, 1, w);
+				r[px] = r[0];
+			}
+		free(w);
+		free(S);
+	}
+	if (py >= 1) {
+		/* whole rows at once: the inner loop runs along x, contiguous */
+		double *S = bake_matrix_periodic(py, dy, sigma);
+		double *w = xreallocarray(NULL, (size_t)py * nx, sizeof *w);
+		for (int k = 0; k < nz; k++) {
+			double *p = f + (size_t)k * plane;
+			memset(w, 0, (size_t)py * nx * sizeof *w);
+			for (int j = 0; j < py; j++) {
+				double *o = w + (size_t)j * nx;
+				const double *Sr = S + (size_t)j * py;
+				for (int l = 0; l < py; l++) {
+					const double *in = p + (size_t)l * nx;
+					double s = Sr[l];
+					for (int i = 0; i < nx; i++)
+						o[i] += s * in[i];
+				}
+			}
+			memcpy(p, w, (size_t)py * nx * sizeof *w);
+			memcpy(p + (size_t)py * nx, p, (size_t)nx * sizeof *p);
+		}
+		free(w);
+		free(S);
+	}
+}

@@ -1,0 +1,121 @@
+/*
+ * bleach.h - the modules of bleach, the 3D exposure simulator (thesis
+ * 2.1, 8.6): thin-film optics, Dill bleaching with its dose table, the
+ * post-exposure bake, the development-rate models and the M = level
+ * solid.  Shared by main.c and the unit tests in tests/bleach/.
+ *
+ * Depth convention inside the modules: node j of a column lies at depth
+ * j * dz below the original resist top (j = 0 the top, j = nz - 1 the
+ * resist-substrate interface).  Only main.c maps it to the rate file's
+ * z, which runs from -thickness (k = 0) up to 0.
+ */
+#ifndef S3D_BLEACH_H
+#define S3D_BLEACH_H
+
+#include "fmt_bleach.h"
+
+#include <stddef.h>
+
+/* ---- thinfilm.c: characteristic-matrix standing waves (thesis 2.1) ---- */
+
+struct thinfilm {
+	double lambda;          /* um */
+	double n0;              /* ambient index */
+	double nr;              /* resist real index */
+	int nz;                 /* resist nodes; nz - 1 sublayers */
+	double dz;              /* sublayer thickness, um */
+	int nlayers;
+	const struct bleach_layer *layers;   /* under the resist, top first */
+	double sub_n, sub_k;
+};
+
+void thinfilm_init(struct thinfilm *tf, const struct bleach_input *in, int nz);
+/* Relative intensity (nr / n0) |E(z_j)|^2 / |E_incident|^2 at the nz
+ * nodes, for the resist extinction kr[s] of sublayer s (between nodes s
+ * and s + 1). */
+void thinfilm_intensity(const struct thinfilm *tf, const double *kr, double *irel);
+
+/* ---- expose.c: Dill ABC bleaching (thesis 2.1, Figure 2.2) ---- */
+
+/* The exposure of one column, integrated over dose by RK4. */
+struct exposure {
+	struct thinfilm tf;
+	int standing;           /* 0: Beer-Lambert, I(0) = 1, no reflections */
+	double A, B, C;         /* 1/um, 1/um, cm2/mJ */
+	double h;               /* largest dose step, mJ/cm2 */
+	double *kr, *irel, *k1, *k2, *k3, *k4, *tmp;   /* work arrays */
+};
+
+/* Step accuracy: C * h * Imax stays below this.  RK4's error per unit
+ * exposure then is about EXPOSE_STEP^4 ~ 1e-8, far below the 1e-4 that
+ * halving the step may change M by (checked by tests/bleach/expose.c). */
+#define EXPOSE_STEP 0.01
+
+/* dmax: the largest dose any column gets; step_scale multiplies the
+ * default step (tests halve it). */
+void exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
+		   double dmax, double step_scale);
+void exposure_free(struct exposure *e);
+/* Relative intensity in the column for PAC M (nz values). */
+void exposure_intensity(struct exposure *e, const double *M, double *irel);
+/* dM/dD = -C I M for the column state M, into dM. */
+void exposure_rhs(struct exposure *e, const double *M, double *dM);
+/* M after dose D (mJ/cm2) from M = 1, by steps of at most e->h. */
+void exposure_column(struct exposure *e, double D, double *M);
+
+/* M(z; D) for D = 0, h, 2h, ..., tabulated with dM/dD, interpolated by
+ * cubic Hermite: every column of a vertically propagating exposure
+ * follows the same history scaled by its dose (thesis 2.1). */
+struct dose_table {
+	int nz, nd;             /* nd + 1 rows */
+	double h;               /* dose step */
+	double *M;              /* (nd + 1) * nz */
+	double *dM;             /* dM/dD, same shape */
+};
+struct dose_table *dose_table_build(struct exposure *e, double dmax);
+/* M at dose D into out (nz values); D is clamped to [0, dmax]. */
+void dose_table_eval(const struct dose_table *t, double D, double *out);
+void dose_table_free(struct dose_table *t);
+
+/* ---- bake.c: post-exposure bake (thesis 8.6, Figure 8.17) ---- */
+
+/* n x n matrix of Gaussian smoothing, standard deviation sigma (um), on
+ * n nodes spacing d with no flux through either end. */
+double *bake_matrix_neumann(int n, double d, double sigma);
+/* p x p matrix of the same smoothing on a period of p samples spacing d. */
+double *bake_matrix_periodic(int p, double d, double sigma);
+/* v[i * stride] for i < n replaced by S v. */
+void bake_apply(const double *S, int n, double *v, size_t stride, double *work);
+/* The whole array f[(k * ny + j) * nx + i] smoothed in x and y, periodic
+ * with nx - 1 and ny - 1 samples a period (the last node repeats the
+ * first, as splat's window does). */
+void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sigma);
+/* Each row of rows (nrows rows of n values, spacing d) smoothed. */
+void bake_rows(double *rows, int nrows, int n, double d, double sigma);
+
+/* ---- devrate.c: development-rate models (thesis 2.1, Table 9.1) ---- */
+
+/* Precomputed constants of the negative CA resist. */
+struct devrate {
+	enum bleach_model model;
+	double par[6];
+	int npar;
+	double kt;              /* k(T) t of the crosslinking, dimensionless */
+	double order;
+};
+void devrate_init(struct devrate *d, const struct bleach_input *in);
+/* Rate (um/s) for PAC M at depth below the original top (um). */
+double devrate(const struct devrate *d, double M, double depth);
+/* Kim surface factor S(M, depth). */
+double devrate_kim_surface(const double *par, int npar, double M, double depth);
+/* Boltzmann constant in eV/K, for the Arrhenius rate. */
+#define BOLTZMANN_EV 8.617333262e-5
+
+/* ---- solid.c: mxyz.solid.3D (thesis Figure 8.15) ---- */
+
+/* Writes the closed surface M = level of f (grid as in iso.h) to path
+ * as pdraw triangles; returns the triangle count. */
+long solid_write(const char *path, const double *f, int nx, int ny, int nz,
+		 const double bounds[6], double level);
+
+#endif

@@ -1,0 +1,213 @@
+/*
+ * bleach - 3D exposure of a photoresist (thesis 2.1, 8.6, Appendix B):
+ * reads splat's aerial image (a contour-file) and a resist/process
+ * description (bleach.5), computes the PAC concentration M(x, y, z) with
+ * Dill bleaching under standing waves, the post-exposure bake, and the
+ * development rate, and writes the rate array for etch (rval.3D.binary,
+ * or rval.3D with -ascii), carrying M as a second array.  -solid also
+ * writes mxyz.solid.3D, the surface M = level (Figure 8.15).
+ *
+ * Order of work: one 1D exposure run tabulated over dose (expose.c), the
+ * z bake applied to that table (bake.c: it commutes with the
+ * interpolation), every column interpolated from it, the x-y bake on the
+ * full array, then the rates.
+ */
+#include "args.h"
+#include "bleach.h"
+#include "fmt_bleach.h"
+#include "fmt_contour.h"
+#include "fmt_rate.h"
+#include "num.h"
+#include "util.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage[] =
+	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] contour-file bleach-inputfile\n"
+	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
+	"  -solid         also write mxyz.solid.3D, the surface M = level, for pdraw\n"
+	"  -m level       M of that surface (default 0.8)\n"
+	"  -o rate-file   name of the rate array file\n"
+	"  -q             no progress lines on stderr\n";
+
+/* Largest grid: two arrays of doubles (rate and M) at 1 GB together. */
+#define BLEACH_MAX_POINTS (1L << 26)
+
+struct options {
+	int ascii, solid, quiet;
+	double level;
+	const char *output;
+	const char *contour;
+	const char *input;
+};
+
+static void parse_options(int argc, char **argv, struct options *o)
+{
+	struct args a;
+	args_init(&a, argc, argv);
+	memset(o, 0, sizeof *o);
+	o->level = 0.8;
+	while (a.i < argc) {
+		const char *s = argv[a.i];
+		if (args_help(&a)) {
+			fputs(usage, stdout);
+			fshut(stdout, "stdout");
+			exit(0);
+		}
+		if (args_flag(&a, "-ascii"))
+			o->ascii = 1;
+		else if (args_flag(&a, "-solid"))
+			o->solid = 1;
+		else if (args_flag(&a, "-q"))
+			o->quiet = 1;
+		else if (args_num(&a, "-m", 0, 1, &o->level))
+			;
+		else if (args_str(&a, "-o", &o->output))
+			;
+		else if (s[0] == '-' && s[1] != '\0')
+			args_unknown(&a);
+		else if (!o->contour)
+			o->contour = argv[a.i++];
+		else if (!o->input)
+			o->input = argv[a.i++];
+		else
+			args_error(&a, "more than two input files (%.60s)", argv[a.i++]);
+	}
+	if (!o->contour)
+		args_error(&a, "no contour-file");
+	else if (!o->input)
+		args_error(&a, "no bleach-inputfile");
+	args_done(&a, usage);
+}
+
+static int quiet;
+
+static void progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static void progress(const char *fmt, ...)
+{
+	if (quiet)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	fprintf(stderr, "%s: ", util_prog());
+	vfprintf(stderr, fmt, ap);
+	fputc('\n', stderr);
+	va_end(ap);
+}
+
+/* Aerial intensity at (x, y), bilinear between the contour-file's points
+ * (resampling for "grid nx ny"). */
+static double aerial_at(const struct contour *c, double x, double y)
+{
+	double u = (x - c->xmin) / (c->xmax - c->xmin) * (c->nx - 1);
+	double v = (y - c->ymin) / (c->ymax - c->ymin) * (c->ny - 1);
+	if (!(u > 0)) u = 0;
+	if (!(v > 0)) v = 0;
+	if (u > c->nx - 1) u = c->nx - 1;
+	if (v > c->ny - 1) v = c->ny - 1;
+	int i = (int)u, j = (int)v;
+	if (i > c->nx - 2) i = c->nx - 2;
+	if (j > c->ny - 2) j = c->ny - 2;
+	double s = u - i, t = v - j;
+	const double *z = c->z + (size_t)j * c->nx + i;
+	return (1 - s) * (1 - t) * z[0] + s * (1 - t) * z[1] +
+	       (1 - s) * t * z[c->nx] + s * t * z[c->nx + 1];
+}
+
+int main(int argc, char **argv)
+{
+	util_setprog(argv[0]);
+	struct options o;
+	parse_options(argc, argv, &o);
+	quiet = o.quiet;
+
+	struct contour *c = fmt_contour_read(o.contour, 0);
+	struct bleach_input in;
+	fmt_bleach_read(o.input, &in);
+
+	int nx = in.nx ? in.nx : c->nx, ny = in.nx ? in.ny : c->ny, nz = in.nz;
+	double npts = (double)nx * ny * nz;
+	if (npts > BLEACH_MAX_POINTS)
+		die("%s:%ld: grid of %.0f points is too large (at most %ld)", o.input,
+		    in.line_nz ? in.line_nz : 1L, npts, BLEACH_MAX_POINTS);
+	double bounds[6] = {c->xmin, c->xmax, c->ymin, c->ymax, -in.thick, 0};
+	struct ratefile *r = fmt_rate_new(nx, ny, nz, bounds);
+	double *M = fmt_rate_add_array(r, "M");
+	double *R = fmt_rate_values(r);
+	size_t ncol = (size_t)nx * (size_t)ny;
+
+	/* column doses, mJ/cm2; negative intensities (interpolation ripple
+	 * in an aerial image) expose nothing */
+	double *dose = xreallocarray(NULL, ncol, sizeof *dose);
+	double dmax = 0;
+	for (int j = 0; j < ny; j++)
+		for (int i = 0; i < nx; i++) {
+			double ia = in.nx ? aerial_at(c, fmt_rate_x(r, i), fmt_rate_y(r, j))
+					  : c->z[(size_t)j * nx + i];
+			double d = ia > 0 ? in.dose * ia : 0;
+			dose[(size_t)j * nx + i] = d;
+			if (d > dmax)
+				dmax = d;
+		}
+	progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
+		 c->nx, c->ny, o.contour, dmax);
+
+	struct exposure e;
+	exposure_init(&e, &in, nz, dmax, 1.0);
+	struct dose_table *t = dose_table_build(&e, dmax);
+	progress("exposure: %d dose steps of %g mJ/cm2, %d points through %g um, %s",
+		 t->nd, t->h, nz, in.thick,
+		 in.standing ? "thin-film standing waves" : "Beer-Lambert, no reflections");
+
+	double dz = in.thick / (nz - 1);
+	if (in.bake != BAKE_NONE && in.diffusion > 0) {
+		bake_rows(t->M, t->nd + 1, nz, dz, in.diffusion);
+		bake_rows(t->dM, t->nd + 1, nz, dz, in.diffusion);
+	}
+
+	double *col = xreallocarray(NULL, (size_t)nz, sizeof *col);
+	for (size_t q = 0; q < ncol; q++) {
+		dose_table_eval(t, dose[q], col);
+		/* node j is at depth j dz; the rate file's k = 0 is the bottom */
+		for (int k = 0; k < nz; k++)
+			M[(size_t)k * ncol + q] = col[nz - 1 - k];
+	}
+	if (in.bake == BAKE_3D && in.diffusion > 0)
+		bake_xy(M, nx, ny, nz, (c->xmax - c->xmin) / (nx - 1),
+			(c->ymax - c->ymin) / (ny - 1), in.diffusion);
+	if (in.bake != BAKE_NONE)
+		progress("bake: diffusion length %g um in %s", in.diffusion,
+			 in.bake == BAKE_3D ? "x, y and z" : "z");
+
+	struct devrate dv;
+	devrate_init(&dv, &in);
+	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
+	for (int k = 0; k < nz; k++) {
+		double depth = in.thick - k * dz;
+		if (depth < 0)
+			depth = 0;
+		double *mk = M + (size_t)k * ncol, *rk = R + (size_t)k * ncol;
+		for (size_t q = 0; q < ncol; q++)
+			rk[q] = devrate(&dv, mk[q], depth);
+	}
+	progress("development rate: %s model", mname[in.model]);
+
+	const char *out = o.output ? o.output : o.ascii ? "rval.3D" : "rval.3D.binary";
+	fmt_rate_write(out, r, o.ascii);
+	progress("wrote %s (%dx%dx%d, arrays rate and M)", out, nx, ny, nz);
+	if (o.solid) {
+		long ntri = solid_write("mxyz.solid.3D", M, nx, ny, nz, bounds, o.level);
+		progress("wrote mxyz.solid.3D (%ld triangles, M = %g)", ntri, o.level);
+	}
+
+	free(col);
+	free(dose);
+	dose_table_free(t);
+	exposure_free(&e);
+	fmt_rate_free(r);
+	fmt_contour_free(c);
+	return 0;
+}

@@ -1,0 +1,412 @@
+/*
+ * fmt_bleach.c - the bleach input file (see fmt_bleach.h, bleach.5).
+ *
+ * One statement a line: a keyword, then either positional numbers
+ * (layer, substrate, dose, develop) or keyword-value pairs (resist,
+ * grid, crosslink).  Everything is checked here - ranges, missing and
+ * repeated statements, statements that need each other - so that the
+ * program never meets an input it cannot simulate.  A repeated statement
+ * is an error (except layer, which stacks films top first), because a
+ * silently ignored line in a process description is a wrong simulation.
+ */
+#include "fmt_bleach.h"
+#include "lex.h"
+#include "num.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+/* Statements, for "given twice" and "missing" checks. */
+enum { S_WAVE, S_AMB, S_RESIST, S_SUB, S_DOSE, S_BAKE, S_DEV, S_GRID,
+       S_SW, S_XLINK, S_COUNT };
+
+struct parser {
+	struct lex *lx;
+	long seen[S_COUNT];         /* line of each statement, 0 if absent */
+	struct bleach_input *in;
+};
+
+static double number(struct parser *p, const char *tok, const char *what,
+		     double min, double max)
+{
+	double v;
+	if (!tok)
+		lex_error(p->lx, "missing %s", what);
+	if (!num_parse(tok, &v))
+		lex_error(p->lx, "expected %s (a number), found \"%.40s\"", what, tok);
+	if (!(v >= min && v <= max))
+		lex_error(p->lx, "%s %s out of range [%g, %g]", what, tok, min, max);
+	return v;
+}
+
+static long count(struct parser *p, const char *tok, const char *what,
+		  long min, long max)
+{
+	long v;
+	if (!tok)
+		lex_error(p->lx, "missing %s", what);
+	if (!num_parse_count(tok, min, max, &v))
+		lex_error(p->lx, "expected %s (a whole number from %ld to %ld), found \"%.40s\"",
+			  what, min, max, tok);
+	return v;
+}
+
+static void once(struct parser *p, int s, const char *kw)
+{
+	if (p->seen[s])
+		lex_error(p->lx, "%s given twice (first on line %ld)", kw, p->seen[s]);
+	p->seen[s] = lex_lineno(p->lx);
+}
+
+static void nargs(struct parser *p, char **t, int nt, int lo, int hi, const char *kw)
+{
+	if (nt - 1 < lo)
+		lex_error(p->lx, "%s: expected %d value%s, found %d", kw, lo,
+			  lo == 1 ? "" : "s", nt - 1);
+	if (nt - 1 > hi)
+		lex_error(p->lx, "%s: unexpected \"%.40s\" after %d value%s", kw,
+			  t[hi + 1], hi, hi == 1 ? "" : "s");
+}
+
+/* Common upper bounds: wide enough for any real process, small enough
+ * that no later arithmetic overflows. */
+#define BIG_LEN 1e3        /* um */
+#define BIG_INDEX 100.0
+#define BIG_DILL 1e3       /* 1/um or cm2/mJ */
+#define BIG_DOSE 1e6       /* mJ/cm2 */
+#define BIG_RATE 1e6       /* um/s */
+
+static void st_resist(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got_t = 0, got_n = 0, got_d = 0;
+	for (int i = 1; i < nt;) {
+		if (strcasecmp(t[i], "thickness") == 0) {
+			in->thick = number(p, i + 1 < nt ? t[i + 1] : NULL,
+					   "resist thickness", 1e-6, BIG_LEN);
+			got_t = 1;
+			i += 2;
+		} else if (strcasecmp(t[i], "index") == 0) {
+			in->index = number(p, i + 1 < nt ? t[i + 1] : NULL,
+					   "resist index", 1e-3, BIG_INDEX);
+			got_n = 1;
+			i += 2;
+		} else if (strcasecmp(t[i], "dill") == 0) {
+			in->A = number(p, i + 1 < nt ? t[i + 1] : NULL, "Dill A", 0, BIG_DILL);
+			in->B = number(p, i + 2 < nt ? t[i + 2] : NULL, "Dill B", 0, BIG_DILL);
+			in->C = number(p, i + 3 < nt ? t[i + 3] : NULL, "Dill C", 0, BIG_DILL);
+			got_d = 1;
+			i += 4;
+		} else {
+			lex_error(p->lx, "resist: unknown word \"%.40s\" (expected thickness, index or dill)",
+				  t[i]);
+		}
+	}
+	if (!got_t)
+		lex_error(p->lx, "resist: missing thickness");
+	if (!got_n)
+		lex_error(p->lx, "resist: missing index");
+	if (!got_d)
+		lex_error(p->lx, "resist: missing dill A B C");
+}
+
+static void st_develop(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	if (nt < 2)
+		lex_error(p->lx, "develop: missing model (kim, mack, dill or canegative)");
+	const char *m = t[1];
+	int lo, hi;
+	if (strcasecmp(m, "kim") == 0) {
+		in->model = BLEACH_KIM; lo = 3; hi = 6;
+	} else if (strcasecmp(m, "mack") == 0) {
+		in->model = BLEACH_MACK; lo = hi = 4;
+	} else if (strcasecmp(m, "dill") == 0) {
+		in->model = BLEACH_DILL; lo = hi = 3;
+	} else if (strcasecmp(m, "canegative") == 0) {
+		in->model = BLEACH_CANEG; lo = hi = 3;
+	} else {
+		lex_error(p->lx, "develop: unknown model \"%.40s\" (expected kim, mack, dill or canegative)", m);
+	}
+	int n = nt - 2;
+	if (n < lo || n > hi || (in->model == BLEACH_KIM && n != 3 && n != 6))
+		lex_error(p->lx, "develop %s: expected %s values, found %d", m,
+			  in->model == BLEACH_KIM ? "3 or 6" : lo == 4 ? "4" : "3", n);
+	in->npar = n;
+	for (int i = 0; i < n; i++) {
+		char what[32];
+		snprintf(what, sizeof what, "develop %s parameter %d", m, i + 1);
+		in->par[i] = number(p, t[i + 2], what, -BIG_RATE, BIG_RATE);
+	}
+	const double *r = in->par;
+	switch (in->model) {
+	case BLEACH_KIM:
+		if (!(r[0] > 0 && r[1] > 0))
+			lex_error(p->lx, "develop kim: R1 and R2 must be positive");
+		if (n == 6 && !(r[3] > 0))
+			lex_error(p->lx, "develop kim: R4 must be positive");
+		if (n == 6 && (r[4] < 0 || r[5] < 0))
+			lex_error(p->lx, "develop kim: R5 and R6 must not be negative");
+		break;
+	case BLEACH_MACK:
+		if (!(r[0] >= 0 && r[1] >= 0))
+			lex_error(p->lx, "develop mack: Rmax and Rmin must not be negative");
+		if (!(r[2] >= 0 && r[2] < 1))
+			lex_error(p->lx, "develop mack: Mth must be in [0, 1)");
+		if (!(r[3] > 1 && r[3] <= 1000))
+			lex_error(p->lx, "develop mack: n must be above 1 (and at most 1000)");
+		break;
+	case BLEACH_DILL:
+		/* exp(E1 + E2 M + E3 M^2) must stay finite for M in [0, 1] */
+		if (fabs(r[0]) + fabs(r[1]) + fabs(r[2]) > 200)
+			lex_error(p->lx, "develop dill: |E1| + |E2| + |E3| above 200 overflows");
+		break;
+	case BLEACH_CANEG:
+		if (!(r[0] >= 0 && r[1] >= 0))
+			lex_error(p->lx, "develop canegative: Rmax and Rmin must not be negative");
+		if (!(r[2] > 0 && r[2] <= 1000))
+			lex_error(p->lx, "develop canegative: p must be in (0, 1000]");
+		break;
+	}
+}
+
+static void st_crosslink(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got = 0;
+	for (int i = 1; i < nt; i += 2) {
+		const char *v = i + 1 < nt ? t[i + 1] : NULL;
+		if (strcasecmp(t[i], "rate") == 0) {
+			in->k0 = number(p, v, "crosslink rate k0 (1/s)", 0, 1e30); got |= 1;
+		} else if (strcasecmp(t[i], "energy") == 0) {
+			in->ea = number(p, v, "crosslink energy Ea (eV)", 0, 100); got |= 2;
+		} else if (strcasecmp(t[i], "order") == 0) {
+			in->order = number(p, v, "crosslink order m", 1e-3, 100); got |= 4;
+		} else if (strcasecmp(t[i], "temperature") == 0) {
+			in->temp = number(p, v, "bake temperature (C)", -273.0, 2000); got |= 8;
+			if (!(in->temp > -273.15 + 1e-3))
+				lex_error(p->lx, "bake temperature must be above absolute zero");
+		} else if (strcasecmp(t[i], "time") == 0) {
+			in->time = number(p, v, "bake time (s)", 0, 1e7); got |= 16;
+		} else {
+			lex_error(p->lx, "crosslink: unknown word \"%.40s\" (expected rate, energy, order, temperature or time)",
+				  t[i]);
+		}
+	}
+	static const char *names[] = {"rate", "energy", "order", "temperature", "time"};
+	for (int b = 0; b < 5; b++)
+		if (!(got & (1 << b)))
+			lex_error(p->lx, "crosslink: missing %s", names[b]);
+	in->have_crosslink = 1;
+}
+
+static void st_grid(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got = 0;
+	for (int i = 1; i < nt; i += 2) {
+		const char *v = i + 1 < nt ? t[i + 1] : NULL;
+		if (strcasecmp(t[i], "nx") == 0) {
+			in->nx = (int)count(p, v, "grid nx", 2, BLEACH_MAX_NXY); got |= 1;
+		} else if (strcasecmp(t[i], "ny") == 0) {
+			in->ny = (int)count(p, v, "grid ny", 2, BLEACH_MAX_NXY); got |= 2;
+		} else if (strcasecmp(t[i], "nz") == 0) {
+			in->nz = (int)count(p, v, "grid nz", 2, BLEACH_MAX_NZ); got |= 4;
+		} else {
+			lex_error(p->lx, "grid: unknown word \"%.40s\" (expected nx, ny or nz)", t[i]);
+		}
+	}
+	if ((got & 3) == 1 || (got & 3) == 2)
+		lex_error(p->lx, "grid: give both nx and ny, or neither");
+	if (got == 0)
+		lex_error(p->lx, "grid: expected nx, ny and/or nz");
+	if (got & 4)
+		in->line_nz = lex_lineno(p->lx);
+}
+
+static void statement(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	const char *kw = t[0];
+	if (strcasecmp(kw, "wavelength") == 0) {
+		once(p, S_WAVE, "wavelength");
+		nargs(p, t, nt, 1, 1, kw);
+		in->wavelength = number(p, t[1], "wavelength (um)", 1e-3, 100);
+	} else if (strcasecmp(kw, "ambient") == 0) {
+		once(p, S_AMB, "ambient");
+		nargs(p, t, nt, 1, 1, kw);
+		in->ambient = number(p, t[1], "ambient index", 1e-3, BIG_INDEX);
+	} else if (strcasecmp(kw, "resist") == 0) {
+		once(p, S_RESIST, "resist");
+		st_resist(p, t, nt);
+	} else if (strcasecmp(kw, "layer") == 0) {
+		nargs(p, t, nt, 3, 3, kw);
+		if (in->nlayers >= BLEACH_MAX_LAYERS)
+			lex_error(p->lx, "more than %d layers", BLEACH_MAX_LAYERS);
+		struct bleach_layer *l = &in->layers[in->nlayers++];
+		l->thick = number(p, t[1], "layer thickness (um)", 0, BIG_LEN);
+		l->n = number(p, t[2], "layer index n", 1e-3, BIG_INDEX);
+		l->k = number(p, t[3], "layer extinction k", 0, BIG_INDEX);
+	} else if (strcasecmp(kw, "substrate") == 0) {
+		once(p, S_SUB, "substrate");
+		nargs(p, t, nt, 2, 2, kw);
+		in->sub_n = number(p, t[1], "substrate index n", 1e-3, BIG_INDEX);
+		in->sub_k = number(p, t[2], "substrate extinction k", 0, BIG_INDEX);
+	} else if (strcasecmp(kw, "dose") == 0) {
+		once(p, S_DOSE, "dose");
+		nargs(p, t, nt, 1, 1, kw);
+		in->dose = number(p, t[1], "dose (mJ/cm2)", 0, BIG_DOSE);
+	} else if (strcasecmp(kw, "bake") == 0 || strcasecmp(kw, "bake3d") == 0) {
+		once(p, S_BAKE, "bake");
+		if (nt != 3 || strcasecmp(t[1], "diffusion") != 0)
+			lex_error(p->lx, "%s: expected \"diffusion LENGTH\"", kw);
+		in->diffusion = number(p, t[2], "bake diffusion length (um)", 0, BIG_LEN);
+		in->bake = strcasecmp(kw, "bake3d") == 0 ? BAKE_3D : BAKE_Z;
+	} else if (strcasecmp(kw, "develop") == 0) {
+		once(p, S_DEV, "develop");
+		st_develop(p, t, nt);
+	} else if (strcasecmp(kw, "crosslink") == 0) {
+		once(p, S_XLINK, "crosslink");
+		st_crosslink(p, t, nt);
+	} else if (strcasecmp(kw, "grid") == 0) {
+		once(p, S_GRID, "grid");
+		st_grid(p, t, nt);
+	} else if (strcasecmp(kw, "standingwaves") == 0) {
+		once(p, S_SW, "standingwaves");
+		nargs(p, t, nt, 1, 1, kw);
+		if (strcasecmp(t[1], "on") == 0)
+			in->standing = 1;
+		else if (strcasecmp(t[1], "off") == 0)
+			in->standing = 0;
+		else
+			lex_error(p->lx, "standingwaves: expected on or off, found \"%.40s\"", t[1]);
+	} else {
+		lex_error(p->lx, "unknown statement \"%.40s\"", kw);
+	}
+}
+
+static void parse(struct lex *lx, struct bleach_input *in)
+{
+	struct parser p;
+	memset(&p, 0, sizeof p);
+	memset(in, 0, sizeof *in);
+	p.lx = lx;
+	p.in = in;
+	in->ambient = 1.0;
+	in->standing = 1;
+	in->bake = BAKE_NONE;
+	char **t;
+	int nt;
+	long last = 0;
+	while ((nt = lex_line(lx, &t, NULL)) > 0) {
+		last = lex_lineno(lx);
+		statement(&p, t, nt);
+	}
+	/* Missing statements are reported at the last line read, the place
+	 * where the reader expected them at the latest. */
+	static const struct { int s; const char *what; } need[] = {
+		{S_WAVE, "wavelength"}, {S_RESIST, "resist"},
+		{S_SUB, "substrate"}, {S_DOSE, "dose"}, {S_DEV, "develop"},
+	};
+	for (size_t i = 0; i < sizeof need / sizeof need[0]; i++)
+		if (!p.seen[need[i].s])
+			die("%s:%ld: no %s statement", lex_name(lx), last, need[i].what);
+	if (in->model == BLEACH_CANEG && !in->have_crosslink)
+		die("%s:%ld: develop canegative needs a crosslink statement",
+		    lex_name(lx), p.seen[S_DEV]);
+	if (in->model != BLEACH_CANEG && in->have_crosslink)
+		die("%s:%ld: crosslink is only for develop canegative",
+		    lex_name(lx), p.seen[S_XLINK]);
+	if (in->diffusion > 10 * in->thick && in->bake != BAKE_NONE)
+		die("%s:%ld: bake diffusion length above ten resist thicknesses",
+		    lex_name(lx), p.seen[S_BAKE]);
+	if (in->nz == 0)
+		in->nz = fmt_bleach_default_nz(in);
+}
+
+int fmt_bleach_default_nz(const struct bleach_input *in)
+{
+	double period = in->wavelength / (2 * in->index);
+	double nz = ceil(40 * in->thick / period) + 1;
+	if (nz < 50)
+		nz = 50;
+	if (nz > BLEACH_MAX_NZ)
+		nz = BLEACH_MAX_NZ;
+	return (int)nz;
+}
+
+void fmt_bleach_read(const char *path, struct bleach_input *in)
+{
+	struct lex *lx = lex_open(path);
+	parse(lx, in);
+	lex_close(lx);
+}
+
+void fmt_bleach_parse(const char *name, const char *text, struct bleach_input *in)
+{
+	struct lex *lx = lex_from_memory(name, text, strlen(text));
+	parse(lx, in);
+	lex_close(lx);
+}
+
+static void kv(FILE *f, const char *key, double v)
+{
+	fprintf(f, " %s ", key);
+	num_print(f, v);
+}
+
+void fmt_bleach_write(const char *path, const struct bleach_input *in)
+{
+	struct aout *a = aout_open(path);
+	FILE *f = a->f;
+	fputs("wavelength ", f);
+	num_print(f, in->wavelength);
+	if (in->ambient != 1.0) {
+		fputs("\nambient ", f);
+		num_print(f, in->ambient);
+	}
+	fputs("\nresist", f);
+	kv(f, "thickness", in->thick);
+	kv(f, "index", in->index);
+	double abc[3] = {in->A, in->B, in->C};
+	fputs(" dill ", f);
+	num_print_row(f, abc, 3);
+	for (int i = 0; i < in->nlayers; i++) {
+		double l[3] = {in->layers[i].thick, in->layers[i].n, in->layers[i].k};
+		fputs("layer ", f);
+		num_print_row(f, l, 3);
+	}
+	double s[2] = {in->sub_n, in->sub_k};
+	fputs("substrate ", f);
+	num_print_row(f, s, 2);
+	fputs("dose ", f);
+	num_print(f, in->dose);
+	fputc('\n', f);
+	if (!in->standing)
+		fputs("standingwaves off\n", f);
+	if (in->bake != BAKE_NONE) {
+		fputs(in->bake == BAKE_3D ? "bake3d diffusion " : "bake diffusion ", f);
+		num_print(f, in->diffusion);
+		fputc('\n', f);
+	}
+	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
+	fprintf(f, "develop %s ", mname[in->model]);
+	num_print_row(f, in->par, in->npar);
+	if (in->have_crosslink) {
+		fputs("crosslink", f);
+		kv(f, "rate", in->k0);
+		kv(f, "energy", in->ea);
+		kv(f, "order", in->order);
+		kv(f, "temperature", in->temp);
+		kv(f, "time", in->time);
+		fputc('\n', f);
+	}
+	if (in->nx > 0)
+		fprintf(f, "grid nx %d ny %d nz %d\n", in->nx, in->ny, in->nz);
+	else
+		fprintf(f, "grid nz %d\n", in->nz);
+	aout_commit(a);
+}
