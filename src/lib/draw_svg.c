@@ -91,7 +91,8 @@ void draw_write_svg(const struct draw *d, const char *path)
 	struct aout *a = aout_open(path);
 	FILE *f = a->f;
 	int npages = d->npages ? d->npages : 1;
-	double W = DRAW_PAGE_W, H = DRAW_PAGE_H;
+	/* d->w x d->h: a landscape picture is drawn on a wide page */
+	double W = d->w, H = d->h;
 	fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", f);
 	fputs("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\"", f);
 	fprintf(f, " width=\"%dpt\" height=\"%dpt\" viewBox=\"0 0 %d %d\">\n",

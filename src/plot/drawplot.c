@@ -1,0 +1,303 @@
+/*
+ * drawplot - X-Y line plots of 2D plot files (thesis Appendix B,
+ * drawplot(L)).  Each set of each file is one page: axes with round
+ * limits (autorange) or the file's bounds divided into xticks/yticks,
+ * optional log axes, the 11 line types and 18 markers of the guide, and
+ * a template-file giving line type, marker and a legend label per curve.
+ */
+#include "args.h"
+#include "draw.h"
+#include "fmt_options.h"
+#include "fmt_plot.h"
+#include "fmt_template.h"
+#include "plot_common.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage_head[] =
+	"usage: drawplot [-o options-file] [-Pprinter] [-s scale] [-ar] [-clip] [-e] [-g]\n"
+	"                [-l] [-noplot] [-print] [-ps] [-xlog] [-ylog] [-t template-file]\n"
+	"                [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file]\n"
+	"                [X options] plot-file...\n"
+	"  -ar              no automatic axis ranging\n"
+	"  -clip            clip the curves to the plot box\n"
+	"  -e               equal x and y scales\n"
+	"  -g               draw a grid\n"
+	"  -l               landscape\n"
+	"  -xlog, -ylog     logarithmic x or y axis\n"
+	"  -t template-file line type, marker and label per curve\n";
+
+/* The options-file keywords of the guide, with its ranges. */
+static const struct opt_spec spec[] = {
+	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
+	PLOT_OPT_ONOFF("autorange"), PLOT_OPT_ONOFF("clip"), PLOT_OPT_ONOFF("equalscale"),
+	PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_ONOFF("postscript"),
+	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"), PLOT_OPT_ONOFF("line"),
+	PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"),
+	PLOT_OPT_ONOFF("markerchange"), PLOT_OPT_ONOFF("landscape"),
+	PLOT_OPT_ONOFF("xlog"), PLOT_OPT_ONOFF("ylog"), PLOT_OPT_SCALE,
+	PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
+	{"sleeptime", OPT_INT, 1, 20, NULL},    /* SunView only: accepted, unused */
+	PLOT_OPT_STR("templatefile"),
+	{NULL, 0, 0, 0, NULL}
+};
+
+struct options {
+	struct plot_cmd cmd;
+	int noauto, clip, equal, grid, xlog, ylog;
+	const char *templ;
+	int nfiles;
+	char **files;
+};
+
+struct ctx {
+	struct plot_settings s;
+	int autorange, clip, xlog, ylog;
+	struct template *t;
+	int nfiles;
+	struct plot_file **pf;
+};
+
+#define MARKER_SIZE 6.0     /* points across */
+#define LEGEND_FONT 10.0
+
+static void usage_exit(void)
+{
+	fputs(usage_head, stdout);
+	fputs(plot_usage_common, stdout);
+	fputs(plot_usage_x, stdout);
+	fshut(stdout, "stdout");
+	exit(0);
+}
+
+static void parse_options(int argc, char **argv, struct options *o)
+{
+	struct args a;
+	args_init(&a, argc, argv);
+	memset(o, 0, sizeof *o);
+	plot_cmd_init(&o->cmd);
+	o->files = xcalloc((size_t)argc, sizeof *o->files);
+	while (a.i < argc) {
+		const char *s = argv[a.i];
+		if (args_help(&a))
+			usage_exit();
+		if (args_flag(&a, "-ar")) o->noauto = 1;
+		else if (args_flag(&a, "-clip")) o->clip = 1;
+		else if (args_flag(&a, "-e")) o->equal = 1;
+		else if (args_flag(&a, "-g")) o->grid = 1;
+		else if (args_flag(&a, "-xlog")) o->xlog = 1;
+		else if (args_flag(&a, "-ylog")) o->ylog = 1;
+		else if (args_str(&a, "-t", &o->templ)) ;
+		else if (plot_cmd_arg(&a, &o->cmd, PC_LANDSCAPE | PC_XDISPLAY)) ;
+		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
+		else o->files[o->nfiles++] = argv[a.i++];
+	}
+	if (o->nfiles == 0)
+		args_error(&a, "no plot-file");
+	if (a.bad) {
+		free(o->files);
+		fputs(usage_head, stderr);
+		fputs(plot_usage_common, stderr);
+		fputs(plot_usage_x, stderr);
+	}
+	args_done(&a, "");
+}
+
+/* The data extent of a set (positive values only for a log axis). */
+static void extent(const struct plot_set *st, int axis, int positive, double *lo, double *hi)
+{
+	*lo = INFINITY, *hi = -INFINITY;
+	for (int c = 0; c < st->ncurves; c++)
+		for (int k = 0; k < st->curves[c].npts; k++) {
+			double v = st->curves[c].p[2 * k + axis];
+			if (positive && !(v > 0))
+				continue;
+			if (v < *lo) *lo = v;
+			if (v > *hi) *hi = v;
+		}
+}
+
+static void make_axis(struct plot_axis *ax, const struct plot_set *st, int axis,
+		      int log, int ndiv, int autorange)
+{
+	double lo = st->bounds[2 * axis], hi = st->bounds[2 * axis + 1];
+	if (log) {
+		if (!(lo > 0) || !(hi > lo))
+			extent(st, axis, 1, &lo, &hi);
+		if (plot_axis_log(ax, lo, hi, autorange))
+			return;
+		warn("no positive %c values for the log axis; using a linear axis",
+		     axis ? 'y' : 'x');
+		lo = st->bounds[2 * axis], hi = st->bounds[2 * axis + 1];
+	}
+	if (!(hi > lo)) {
+		extent(st, axis, 0, &lo, &hi);
+		if (!isfinite(lo))
+			lo = 0, hi = 1;
+	}
+	plot_axis_linear(ax, lo, hi, ndiv, autorange);
+}
+
+/* Line type and marker of curve i (template, else linechange and
+ * markerchange cycling, else solid line without marker). */
+static void style(const struct ctx *c, int i, int *lt, int *mk, const char **label)
+{
+	*label = NULL;
+	if (c->t) {
+		const struct template_entry *e = &c->t->e[i % c->t->n];
+		*lt = e->ln_type;
+		*mk = e->mkr_type;
+		*label = e->label;
+	} else {
+		*lt = c->s.linechange ? 1 + i % (DRAW_NLINETYPES - 1) : 1;
+		*mk = c->s.markerchange ? 1 + i % (DRAW_NMARKERS - 1) : c->s.marker ? 2 : 0;
+	}
+	if (!c->s.line)
+		*lt = 0;
+	if (!c->s.marker && !c->s.markerchange && !c->t)
+		*mk = 0;
+}
+
+static void draw_curve(struct draw *d, const struct plot_frame *f,
+		       const struct plot_curve *cv, int lt, int mk)
+{
+	double *xy = xreallocarray(NULL, (size_t)cv->npts + 1, 2 * sizeof *xy);
+	int n = 0;
+	draw_set_line(d, lt, 1.0);
+	for (int k = 0; k <= cv->npts; k++) {
+		double px, py;
+		if (k < cv->npts && plot_frame_map(f, cv->p[2 * k], cv->p[2 * k + 1], &px, &py)) {
+			xy[2 * n] = px, xy[2 * n + 1] = py;
+			n++;
+			continue;
+		}
+		/* a point a log axis cannot show breaks the line */
+		if (lt && n >= 2)
+			draw_polyline(d, n, xy);
+		if (mk)
+			for (int m = 0; m < n; m++)
+				draw_marker(d, mk, xy[2 * m], xy[2 * m + 1], MARKER_SIZE);
+		n = 0;
+	}
+	free(xy);
+}
+
+static void legend(struct draw *d, const struct ctx *c, const struct plot_frame *f, int ncurves)
+{
+	int n = c->t ? (c->t->n < ncurves ? c->t->n : ncurves) : 0, shown = 0;
+	for (int i = 0; i < n; i++)
+		if (c->t->e[i].label)
+			shown++;
+	if (!shown)
+		return;
+	double row = LEGEND_FONT * 1.6, w = 0;
+	for (int i = 0; i < n; i++)
+		if (c->t->e[i].label) {
+			double tw = strlen(c->t->e[i].label) * LEGEND_FONT * 0.55;
+			if (tw > w) w = tw;
+		}
+	double bx1 = f->x1 - 8, bx0 = bx1 - (w + 50), by1 = f->y1 - 8, by0 = by1 - shown * row - 6;
+	double box[8] = {bx0, by0, bx1, by0, bx1, by1, bx0, by1};
+	draw_set_line(d, 1, 0.5);
+	draw_polygon(d, 4, box, 1.0, 1);
+	double y = by1 - 3 - row / 2;
+	for (int i = 0; i < n; i++) {
+		int lt, mk;
+		const char *lab;
+		style(c, i, &lt, &mk, &lab);
+		if (!lab)
+			continue;
+		draw_set_line(d, lt, 1.0);
+		if (lt)
+			draw_segment(d, bx0 + 6, y, bx0 + 36, y);
+		if (mk)
+			draw_marker(d, mk, bx0 + 21, y, MARKER_SIZE);
+		draw_set_line(d, 1, 0.8);
+		draw_text(d, bx0 + 42, y, LEGEND_FONT, 0, DRAW_LEFT, DRAW_MIDDLE, lab);
+		y -= row;
+	}
+}
+
+static struct draw *render(void *vc)
+{
+	const struct ctx *c = vc;
+	struct draw *d = plot_new_page(c->s.landscape);
+	int first = 1;
+	for (int fi = 0; fi < c->nfiles; fi++)
+		for (int si = 0; si < c->pf[fi]->nsets; si++) {
+			const struct plot_set *st = &c->pf[fi]->sets[si];
+			if (!first)
+				draw_page(d);
+			first = 0;
+			struct plot_axis xa, ya;
+			make_axis(&xa, st, 0, c->xlog, c->s.xticks, c->autorange);
+			make_axis(&ya, st, 1, c->ylog, c->s.yticks, c->autorange);
+			struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
+			plot_frame_place(&f, d, c->s.equalscale);
+			plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+			if (c->clip)
+				draw_clip(d, f.x0, f.y0, f.x1, f.y1);
+			for (int i = 0; i < st->ncurves; i++) {
+				int lt, mk;
+				const char *lab;
+				style(c, i, &lt, &mk, &lab);
+				draw_curve(d, &f, &st->curves[i], lt, mk);
+			}
+			if (c->clip)
+				draw_unclip(d);
+			legend(d, c, &f, st->ncurves);
+		}
+	return d;
+}
+
+int main(int argc, char **argv)
+{
+	struct options o;
+	parse_options(argc, argv, &o);
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	memset(val, 0, sizeof val);
+	if (o.cmd.optfile)
+		fmt_options_read(o.cmd.optfile, spec, val);
+
+	struct ctx c;
+	memset(&c, 0, sizeof c);
+	c.s = (struct plot_settings){
+		.toplabel = "X-Y LINE PLOT", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
+		.equalscale = 0, .postscript = 1, .line = 1, .scale = 1.0,
+		.xticks = 4, .yticks = 4,
+	};
+	plot_settings_resolve(&c.s, spec, val, &o.cmd);
+	const struct opt_value *v;
+	c.autorange = (v = plot_opt(spec, val, "autorange")) ? (int)v->num : 1;
+	if (o.noauto || c.s.ticks_set)  /* the guide: ticks in the file turn it off */
+		c.autorange = 0;
+	c.clip = o.clip || ((v = plot_opt(spec, val, "clip")) && v->num);
+	c.xlog = o.xlog || ((v = plot_opt(spec, val, "xlog")) && v->num);
+	c.ylog = o.ylog || ((v = plot_opt(spec, val, "ylog")) && v->num);
+	if (o.equal) c.s.equalscale = 1;
+	if (o.grid) c.s.grid = 1;
+	const char *tf = o.templ;
+	if (!tf && (v = plot_opt(spec, val, "templatefile")) && v->str[0])
+		tf = v->str;
+	if (tf)
+		c.t = fmt_template_read(tf);
+
+	c.nfiles = o.nfiles;
+	c.pf = xcalloc((size_t)o.nfiles, sizeof *c.pf);
+	for (int i = 0; i < o.nfiles; i++)
+		c.pf[i] = fmt_plot_read(o.files[i], 2);
+
+	plot_output(&c.s, &o.cmd, render, NULL, &c);
+
+	for (int i = 0; i < o.nfiles; i++)
+		fmt_plot_free(c.pf[i]);
+	free(c.pf);
+	fmt_template_free(c.t);
+	fmt_options_free(spec, val);
+	free(o.files);
+	return 0;
+}
