@@ -1,0 +1,389 @@
+/*
+ * fmm.c - fast marching solver of |grad T| R = 1 (see fmm.h).
+ *
+ * Design.  Nodes are FAR, TRIAL or KNOWN (Sethian 1996).  KNOWN nodes
+ * start as the source (the resist top, or the nodes around seed points);
+ * the TRIAL node of least T is accepted next and its neighbours are
+ * updated from their KNOWN neighbours only, so T is computed in
+ * increasing order and every node once: O(N log N) with a binary heap.
+ * The heap holds (T, node) pairs by value, so sifting touches one array,
+ * and an index per node gives the heap position for decrease-key.
+ *
+ * The update (Sethian & Vladimirsky's second-order upwind scheme):
+ * along each axis take the KNOWN neighbour of smaller T, T1; if the next
+ * node beyond it is KNOWN too with T2 <= T1, the one-sided difference
+ * (3T - 4T1 + T2)/(2h) is used, else (T - T1)/h.  Writing each as
+ * sqrt(a)(T - b), T solves sum a_d (T - b_d)^2 = 1/R^2 over the axes
+ * whose b_d lies below T (added in increasing b_d, the causality
+ * condition).  Where the second-order quadratic has no root (rare, near
+ * sharp rate changes) the solution with fewer axes is kept: never below
+ * the true upwind value, so the order of acceptance stays causal.
+ *
+ * The slowness 1/R is sampled once per node of the refined grid from the
+ * rate grid by trilinear interpolation.
+ */
+#include "fmm.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { FAR = 0, TRIAL = 1, KNOWN = 2 };
+
+/* Point sources: nodes within this many cells (per axis) of a seed get
+ * the exact distance / rate, so the march starts where the front is
+ * already smooth on the grid scale (the point singularity would
+ * otherwise cost an O(h log h) error everywhere). */
+enum { SEED_CELLS = 2 };
+
+struct heap_ent {
+	double t;
+	int32_t n;
+};
+
+struct solver {
+	int n[3];
+	ptrdiff_t stride[3];
+	double a1[3];           /* 1/h^2: first-order coefficient per axis */
+	double a2[3];           /* 9/(4h^2): second-order */
+	double *t;
+	double *slow;           /* 1/R per node, s/um; INFINITY where R ~ 0 */
+	unsigned char *state;
+	int32_t *pos;           /* heap position of TRIAL nodes */
+	struct heap_ent *heap;
+	size_t nheap;
+};
+
+static void sift_up(struct solver *s, size_t i)
+{
+	struct heap_ent e = s->heap[i];
+	while (i > 0) {
+		size_t p = (i - 1) / 2;
+		if (s->heap[p].t <= e.t)
+			break;
+		s->heap[i] = s->heap[p];
+		s->pos[s->heap[i].n] = (int32_t)i;
+		i = p;
+	}
+	s->heap[i] = e;
+	s->pos[e.n] = (int32_t)i;
+}
+
+static void sift_down(struct solver *s, size_t i)
+{
+	struct heap_ent e = s->heap[i];
+	size_t n = s->nheap;
+	for (;;) {
+		size_t c = 2 * i + 1;
+		if (c >= n)
+			break;
+		if (c + 1 < n && s->heap[c + 1].t < s->heap[c].t)
+			c++;
+		if (e.t <= s->heap[c].t)
+			break;
+		s->heap[i] = s->heap[c];
+		s->pos[s->heap[i].n] = (int32_t)i;
+		i = c;
+	}
+	s->heap[i] = e;
+	s->pos[e.n] = (int32_t)i;
+}
+
+/* Makes node n TRIAL with time t, or lowers its time to t. */
+static void offer(struct solver *s, size_t n, double t)
+{
+	if (s->state[n] == FAR) {
+		s->state[n] = TRIAL;
+		s->t[n] = t;
+		s->heap[s->nheap].t = t;
+		s->heap[s->nheap].n = (int32_t)n;
+		s->nheap++;
+		sift_up(s, s->nheap - 1);
+	} else if (s->state[n] == TRIAL && t < s->t[n]) {
+		s->t[n] = t;
+		size_t i = (size_t)s->pos[n];
+		s->heap[i].t = t;
+		sift_up(s, i);
+	}
+}
+
+static size_t pop(struct solver *s)
+{
+	size_t n = (size_t)s->heap[0].n;
+	s->nheap--;
+	if (s->nheap) {
+		s->heap[0] = s->heap[s->nheap];
+		sift_down(s, 0);
+	}
+	return n;
+}
+
+/* The upwind update of node n at grid position c (see the note above). */
+static double update(const struct solver *s, size_t n, const int c[3])
+{
+	double a[3], b[3];
+	int m = 0;
+	for (int d = 0; d < 3; d++) {
+		ptrdiff_t st = s->stride[d];
+		int hi = s->n[d] - 1;
+		double t1 = INFINITY, t2 = INFINITY;
+		if (c[d] > 0 && s->state[n - st] == KNOWN) {
+			t1 = s->t[n - st];
+			if (c[d] > 1 && s->state[n - 2 * st] == KNOWN)
+				t2 = s->t[n - 2 * st];
+		}
+		if (c[d] < hi && s->state[n + st] == KNOWN && s->t[n + st] < t1) {
+			t1 = s->t[n + st];
+			t2 = c[d] < hi - 1 && s->state[n + 2 * st] == KNOWN ? s->t[n + 2 * st]
+									   : INFINITY;
+		}
+		if (t1 == INFINITY)
+			continue;
+		double aa, bb;
+		if (t2 <= t1) {
+			aa = s->a2[d];
+			bb = (4 * t1 - t2) / 3;
+		} else {
+			aa = s->a1[d];
+			bb = t1;
+		}
+		/* insertion by b, so axes join in causal order */
+		int q = m++;
+		while (q > 0 && b[q - 1] > bb) {
+			a[q] = a[q - 1];
+			b[q] = b[q - 1];
+			q--;
+		}
+		a[q] = aa;
+		b[q] = bb;
+	}
+	double f2 = s->slow[n] * s->slow[n];
+	double t = b[0] + s->slow[n] / sqrt(a[0]);
+	double A = a[0], B = a[0] * b[0], C = a[0] * b[0] * b[0];
+	for (int q = 1; q < m && t > b[q]; q++) {
+		A += a[q];
+		B += a[q] * b[q];
+		C += a[q] * b[q] * b[q];
+		double disc = B * B - A * (C - f2);
+		if (disc < 0)
+			break;
+		t = (B + sqrt(disc)) / A;
+	}
+	return t;
+}
+
+/* Updates the non-KNOWN, reachable neighbours of the node just accepted. */
+static void relax(struct solver *s, size_t n, const int c[3])
+{
+	for (int d = 0; d < 3; d++)
+		for (int dir = -1; dir <= 1; dir += 2) {
+			int cd = c[d] + dir;
+			if (cd < 0 || cd >= s->n[d])
+				continue;
+			size_t m = (size_t)((ptrdiff_t)n + dir * s->stride[d]);
+			if (s->state[m] == KNOWN || s->slow[m] == INFINITY)
+				continue;
+			int cm[3] = {c[0], c[1], c[2]};
+			cm[d] = cd;
+			offer(s, m, update(s, m, cm));
+		}
+}
+
+static void coords(const struct solver *s, size_t n, int c[3])
+{
+	c[0] = (int)(n % (size_t)s->n[0]);
+	size_t r = n / (size_t)s->n[0];
+	c[1] = (int)(r % (size_t)s->n[1]);
+	c[2] = (int)(r / (size_t)s->n[1]);
+}
+
+/* Trilinear interpolation of the rate at refined node (i, j, k). */
+static double rate_at(const struct ratefile *r, const int ref[3], const int c[3])
+{
+	const double *v = fmt_rate_values(r);
+	int nr[3] = {r->nx, r->ny, r->nz};
+	int lo[3];
+	double w[3];
+	for (int d = 0; d < 3; d++) {
+		lo[d] = c[d] / ref[d];
+		w[d] = (double)(c[d] % ref[d]) / ref[d];
+		if (lo[d] >= nr[d] - 1) {   /* the far face itself */
+			lo[d] = nr[d] - 1;
+			w[d] = 0;
+		}
+	}
+	double sum = 0;
+	for (int q = 0; q < 8; q++) {
+		int e[3] = {q & 1, (q >> 1) & 1, (q >> 2) & 1};
+		double wq = 1;
+		int idx[3];
+		for (int d = 0; d < 3; d++) {
+			wq *= e[d] ? w[d] : 1 - w[d];
+			idx[d] = lo[d] + (e[d] && w[d] > 0);
+		}
+		if (wq > 0)
+			sum += wq * v[fmt_rate_index(r, idx[0], idx[1], idx[2])];
+	}
+	return sum;
+}
+
+static double slowness(double rate)
+{
+	return rate >= FMM_RATE_FLOOR ? 1 / rate : INFINITY;
+}
+
+/* The rate at any point of the box, trilinear in the rate grid. */
+static double rate_point(const struct ratefile *r, const double p[3])
+{
+	const double *b = &r->xmin;
+	int nr[3] = {r->nx, r->ny, r->nz}, lo[3];
+	double w[3];
+	for (int d = 0; d < 3; d++) {
+		double x = fmin(fmax(p[d], b[2 * d]), b[2 * d + 1]);
+		double u = nr[d] > 1 ? (x - b[2 * d]) / (b[2 * d + 1] - b[2 * d]) * (nr[d] - 1) : 0;
+		lo[d] = (int)u;
+		if (lo[d] >= nr[d] - 1)
+			lo[d] = nr[d] > 1 ? nr[d] - 2 : 0;
+		w[d] = nr[d] > 1 ? u - lo[d] : 0;
+	}
+	const double *v = fmt_rate_values(r);
+	double sum = 0;
+	for (int q = 0; q < 8; q++) {
+		double wq = 1;
+		int idx[3];
+		for (int d = 0; d < 3; d++) {
+			int e = (q >> d) & 1;
+			wq *= e ? w[d] : 1 - w[d];
+			idx[d] = lo[d] + e;
+		}
+		if (wq > 0)
+			sum += wq * v[fmt_rate_index(r, idx[0], idx[1], idx[2])];
+	}
+	return sum;
+}
+
+static struct fmm *setup(const struct ratefile *r, const int refine[3], struct solver *s)
+{
+	struct fmm *f = xcalloc(1, sizeof *f);
+	int nr[3] = {r->nx, r->ny, r->nz};
+	const double *b = &r->xmin;
+	size_t total = 1;
+	for (int d = 0; d < 3; d++) {
+		int ref = refine ? refine[d] : 1;
+		if (ref < 1 || ref > FMM_MAX_REFINE)
+			die("fmm: refinement factor %d out of range 1..%d", ref, FMM_MAX_REFINE);
+		long nd = (long)(nr[d] - 1) * ref + 1;
+		if (nd > INT32_MAX || (total *= (size_t)nd) > INT32_MAX)
+			die("fmm: refined grid too large (over %ld nodes)", (long)INT32_MAX);
+		f->n[d] = s->n[d] = (int)nd;
+		f->bounds[2 * d] = b[2 * d];
+		f->bounds[2 * d + 1] = b[2 * d + 1];
+		f->h[d] = nd > 1 ? (b[2 * d + 1] - b[2 * d]) / (double)(nd - 1) : 0;
+		s->a1[d] = nd > 1 ? 1 / (f->h[d] * f->h[d]) : 0;
+		s->a2[d] = 2.25 * s->a1[d];
+	}
+	s->stride[0] = 1;
+	s->stride[1] = s->n[0];
+	s->stride[2] = (ptrdiff_t)s->n[0] * s->n[1];
+	f->t = xreallocarray(NULL, total, sizeof *f->t);
+	s->t = f->t;
+	s->slow = xreallocarray(NULL, total, sizeof *s->slow);
+	s->state = xcalloc(total, 1);
+	s->pos = xreallocarray(NULL, total, sizeof *s->pos);
+	s->heap = xreallocarray(NULL, total, sizeof *s->heap);
+	s->nheap = 0;
+	int ref[3] = {refine ? refine[0] : 1, refine ? refine[1] : 1, refine ? refine[2] : 1};
+	size_t n = 0;
+	int c[3];
+	for (c[2] = 0; c[2] < s->n[2]; c[2]++)
+		for (c[1] = 0; c[1] < s->n[1]; c[1]++)
+			for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++) {
+				f->t[n] = FMM_UNREACHED;
+				s->slow[n] = slowness(rate_at(r, ref, c));
+			}
+	return f;
+}
+
+static void march(struct fmm *f, struct solver *s)
+{
+	while (s->nheap) {
+		size_t n = pop(s);
+		s->state[n] = KNOWN;
+		f->accepted++;
+		int c[3];
+		coords(s, n, c);
+		relax(s, n, c);
+	}
+	free(s->slow);
+	free(s->state);
+	free(s->pos);
+	free(s->heap);
+}
+
+struct fmm *fmm_solve(const struct ratefile *r, const int refine[3])
+{
+	struct solver s;
+	struct fmm *f = setup(r, refine, &s);
+	/* T = 0 on the resist top: the whole plane z = zmax is KNOWN */
+	size_t plane = (size_t)s.n[0] * (size_t)s.n[1];
+	size_t top = (size_t)(s.n[2] - 1) * plane;
+	for (size_t q = 0; q < plane; q++) {
+		f->t[top + q] = 0;
+		s.state[top + q] = KNOWN;
+	}
+	f->accepted = (long)plane;
+	for (size_t q = 0; q < plane; q++) {
+		int c[3];
+		coords(&s, top + q, c);
+		relax(&s, top + q, c);
+	}
+	march(f, &s);
+	return f;
+}
+
+struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
+			     const double *p, int npts)
+{
+	struct solver s;
+	struct fmm *f = setup(r, refine, &s);
+	for (int q = 0; q < npts; q++) {
+		double x[3];
+		int lo[3], hi[3];
+		for (int d = 0; d < 3; d++) {
+			x[d] = fmin(fmax(p[3 * q + d], f->bounds[2 * d]), f->bounds[2 * d + 1]);
+			int near = f->h[d] > 0 ? (int)lround((x[d] - f->bounds[2 * d]) / f->h[d]) : 0;
+			lo[d] = near - SEED_CELLS < 0 ? 0 : near - SEED_CELLS;
+			hi[d] = near + SEED_CELLS > s.n[d] - 1 ? s.n[d] - 1 : near + SEED_CELLS;
+		}
+		double sp = slowness(rate_point(r, x));
+		int c[3];
+		for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
+			for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
+				for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++) {
+					size_t n = (size_t)c[0] + (size_t)c[1] * (size_t)s.stride[1] +
+						   (size_t)c[2] * (size_t)s.stride[2];
+					double dist = 0;
+					for (int d = 0; d < 3; d++) {
+						double e = f->bounds[2 * d] + c[d] * f->h[d] - x[d];
+						dist += e * e;
+					}
+					/* mean of the slownesses at the ends: exact for a
+					 * uniform rate, second order for a smooth one */
+					double t = sqrt(dist) * 0.5 * (sp + s.slow[n]);
+					if (s.slow[n] < INFINITY && t < INFINITY)
+						offer(&s, n, t);
+				}
+	}
+	march(f, &s);
+	return f;
+}
+
+void fmm_free(struct fmm *f)
+{
+	if (!f)
+		return;
+	free(f->t);
+	free(f);
+}

@@ -1,0 +1,94 @@
+/*
+ * fmm.h - the independent engine of etch: arrival times of the
+ * development front by fast marching (Sethian, PNAS 93 (1996) 1591).
+ *
+ * The ray-string method of the thesis (chapter 7) moves a surface mesh;
+ * where fronts converge it forms loops that must be removed (thesis
+ * 7.5.3, 8.4.3).  The volumetric alternative solves, on a grid, the
+ * eikonal equation
+ *
+ *     |grad T(x)| R(x) = 1,   T = 0 on the resist top (z = zmax),
+ *
+ * whose solution T is the time at which development reaches x (the
+ * viscosity solution: the first arrival, so fronts that meet simply
+ * stop, and there is nothing to deloop).  The developed surface at time
+ * t is the isosurface T = t.  The grid is the rate grid, optionally
+ * refined by an integer factor per axis with the rates interpolated
+ * trilinearly (as the ray-string advance interpolates them, thesis 7.3):
+ * a resist with standing waves needs several nodes per half-period in z
+ * before the discretisation error falls under half a rate-grid cell.
+ *
+ * Units: micrometres, seconds, um/s.
+ */
+#ifndef S3D_FMM_H
+#define S3D_FMM_H
+
+#include "fmt_rate.h"
+#include "iso.h"
+
+#include <stddef.h>
+
+/* Arrival time of nodes the front never reaches (rate zero, or cut off
+ * by zero-rate resist).  Finite, so that interpolation and isosurface
+ * arithmetic stay finite; far beyond any etch time. */
+#define FMM_UNREACHED 1e300
+
+/* Rates below this (um/s) count as zero: at 1e-12 um/s a micrometre
+ * takes 30000 years, and slownesses stay far from overflow when squared. */
+#define FMM_RATE_FLOOR 1e-12
+
+/* The largest refinement factor per axis accepted. */
+enum { FMM_MAX_REFINE = 64 };
+
+struct fmm {
+	int n[3];               /* nodes of the (refined) grid per axis */
+	double bounds[6];       /* xmin xmax ymin ymax zmin zmax: the rate box */
+	double h[3];            /* node spacing per axis, um (0 if one node) */
+	double *t;              /* arrival times, s: n[0]*n[1]*n[2], x fastest */
+	long accepted;          /* nodes reached (for reports) */
+};
+
+/* Solves |grad T| R = 1 with T = 0 on the resist top.  refine[d] >= 1
+ * (NULL: no refinement) multiplies the cells of axis d (x, y, z).
+ * Dies if the refined grid is too large (over 2^31 - 1 nodes). */
+struct fmm *fmm_solve(const struct ratefile *r, const int refine[3]);
+
+/* The same from point sources instead of the top: T = 0 at each of the
+ * npts points p (x y z triples, clamped into the box), exact
+ * |x - p| / R near each point (thesis Figure 8.13's seeds). */
+struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
+			     const double *p, int npts);
+
+void fmm_free(struct fmm *f);
+
+/* T at any point, by trilinear interpolation; p is clamped into the box. */
+double fmm_time_at(const struct fmm *f, const double p[3]);
+
+/* Distance (um) from p to the developed surface at time t: a first-order
+ * estimate |T(p) - t| / |grad T(p)|, refined by a bracketed search along
+ * grad T for the crossing T = t; where p lies in developed resist above
+ * the substrate, the substrate (z = zmin, where T < t) counts as surface
+ * too.  Returns FMM_UNREACHED if T is flat or unreached at p. */
+double fmm_distance(const struct fmm *f, const double p[3], double t);
+
+/* The median and 95th percentile (nearest rank) of fmm_distance over n
+ * points (x y z triples): the cross-check statistic of etch's two
+ * engines.  n = 0 gives 0 and 0. */
+void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t,
+			double *median, double *p95);
+
+/* Emits the triangles of the developed surface at time t: the isosurface
+ * T = t (marching tetrahedra, iso.h), normals towards undeveloped resist,
+ * plus the substrate where the resist is developed through (where the
+ * ray-string nodes stop, thesis 7.3), but not the box's top and side
+ * faces.  For t <= 0 it is the flat resist top.  Returns the count. */
+long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
+
+/* Writes one set per time: path3d in curves.plot form (plot3d(5), every
+ * triangle a closed 4-point curve p1 p2 p3 p1, bounds the rate box),
+ * path2d in curves.plot.2D form (the same triangles projected on x-y).
+ * Either path may be NULL.  Files are committed atomically. */
+void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
+		      const char *path3d, const char *path2d);
+
+#endif

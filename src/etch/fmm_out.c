@@ -1,0 +1,141 @@
+/*
+ * fmm_out.c - the developed surface of a fast-marching solution as
+ * triangles, and its curves.plot / curves.plot.2D output (thesis
+ * Appendix B, etch's FILES), laid out exactly as the ray-string method
+ * writes them: one set per print time, bounds the rate box, every
+ * triangle a closed 4-point curve p1 p2 p3 p1, and in the 2D file the
+ * same triangles projected on the x-y plane.
+ *
+ * The surface is the isosurface T = t closed off at the box (iso.h) with
+ * the caps on the top and side faces dropped: the ray-string mesh starts
+ * as the resist top and its edge nodes slide on the side walls, so it
+ * never contains those faces, while nodes that reach the substrate stop
+ * there (thesis 7.3), which the substrate cap reproduces.
+ */
+#include "fmm.h"
+#include "fmt_plot.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct filter {
+	const struct fmm *f;
+	double tol[3];          /* how close to a face counts as on it, um */
+	iso_emit emit;
+	void *ctx;
+	long count;
+};
+
+/* 1 if all three vertices lie on one box face other than the substrate */
+static int on_face(const struct filter *fl, const double tri[9])
+{
+	for (int face = 0; face < 6; face++) {
+		if (face == 4)      /* zmin: the substrate stays */
+			continue;
+		int d = face / 2;
+		double v = fl->f->bounds[face];
+		int all = 1;
+		for (int q = 0; q < 3 && all; q++)
+			all = fabs(tri[3 * q + d] - v) <= fl->tol[d];
+		if (all)
+			return 1;
+	}
+	return 0;
+}
+
+static void filter_emit(void *ctx, const double tri[9])
+{
+	struct filter *fl = ctx;
+	if (on_face(fl, tri))
+		return;
+	fl->emit(fl->ctx, tri);
+	fl->count++;
+}
+
+/* t <= 0: the resist top, two triangles per cell on the iso.h diagonal,
+ * normals down into the resist */
+static long flat_top(const struct fmm *f, iso_emit emit, void *ctx)
+{
+	long count = 0;
+	double z = f->bounds[5];
+	for (int j = 0; j + 1 < f->n[1]; j++)
+		for (int i = 0; i + 1 < f->n[0]; i++) {
+			double x0 = f->bounds[0] + i * f->h[0], y0 = f->bounds[2] + j * f->h[1];
+			double x1 = i + 2 == f->n[0] ? f->bounds[1] : x0 + f->h[0];
+			double y1 = j + 2 == f->n[1] ? f->bounds[3] : y0 + f->h[1];
+			double a[9] = {x0, y0, z, x1, y1, z, x1, y0, z};
+			double b[9] = {x0, y0, z, x0, y1, z, x1, y1, z};
+			emit(ctx, a);
+			emit(ctx, b);
+			count += 2;
+		}
+	return count;
+}
+
+long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx)
+{
+	/* a surface needs cells: a grid one node thick in some axis has none */
+	if (f->n[0] < 2 || f->n[1] < 2 || f->n[2] < 2)
+		return 0;
+	if (t <= 0)
+		return flat_top(f, emit, ctx);
+	struct filter fl = {f, {0, 0, 0}, emit, ctx, 0};
+	/* iso.h snaps face caps onto the faces exactly; a millionth of a cell
+	 * only guards against the rounding of a face coordinate */
+	for (int d = 0; d < 3; d++)
+		fl.tol[d] = 1e-6 * f->h[d];
+	iso_surface(f->t, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, filter_emit, &fl);
+	return fl.count;
+}
+
+struct tris {
+	double *v;              /* 9 per triangle */
+	size_t n, cap;
+};
+
+static void collect(void *ctx, const double tri[9])
+{
+	struct tris *tr = ctx;
+	xgrow(&tr->v, &tr->cap, 9 * (tr->n + 1), sizeof *tr->v);
+	memcpy(tr->v + 9 * tr->n, tri, 9 * sizeof *tri);
+	tr->n++;
+}
+
+void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
+		      const char *path3d, const char *path2d)
+{
+	struct plot_writer *w3 = path3d ? fmt_plot_open(path3d, 3) : NULL;
+	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
+	struct tris tr = {NULL, 0, 0};
+	for (int k = 0; k < ntimes; k++) {
+		tr.n = 0;
+		fmm_surface(f, times[k], collect, &tr);
+		if (tr.n > PLOT_MAX_COUNT)
+			die("fmm: %zu triangles at t = %g s, more than a plot file holds",
+			    tr.n, times[k]);
+		if (w3) {
+			fmt_plot_begin_set(w3, f->bounds, (long)tr.n);
+			for (size_t i = 0; i < tr.n; i++) {
+				double c[12];
+				memcpy(c, tr.v + 9 * i, 9 * sizeof *c);
+				memcpy(c + 9, tr.v + 9 * i, 3 * sizeof *c);
+				fmt_plot_curve(w3, 4, c);
+			}
+		}
+		if (w2) {
+			fmt_plot_begin_set(w2, f->bounds, (long)tr.n);
+			for (size_t i = 0; i < tr.n; i++) {
+				const double *v = tr.v + 9 * i;
+				double c[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
+				fmt_plot_curve(w2, 4, c);
+			}
+		}
+	}
+	free(tr.v);
+	if (w3)
+		fmt_plot_close(w3);
+	if (w2)
+		fmt_plot_close(w2);
+}

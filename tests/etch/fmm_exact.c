@@ -1,0 +1,382 @@
+/*
+ * fmm_exact.c - the fast-marching engine (src/etch/fmm*.c) against exact
+ * answers (issue "Fast marching against exact answers").
+ *
+ *  1. Uniform rate from the top: T = -z/R is linear, which both the
+ *     first- and second-order upwind differences reproduce exactly, so
+ *     nodes, trilinear queries and distances must agree to rounding
+ *     (1e-12 s, 1e-9 um).
+ *  2. z-only rate R = 1/(1 + a cos(kz)) (standing waves, 10 rate-grid
+ *     nodes per period): against the exact integral of dz/R over the
+ *     piecewise-linear rate the solve must be second order (refining z
+ *     by 4 cuts the error by at least 8, ideal 16); against the closed
+ *     form T = -z - (a/k) sin(kz) of the analytic field within 0.012 s
+ *     (measured 0.0080: the error of interpolating R linearly between
+ *     rate-grid nodes 1/10 period apart, which no refinement removes).
+ *     The plain solve is within 0.013 s (measured 0.0087, 0.9 of a cell
+ *     times dT/dz: the "half a cell off" of a plain solve on a resist
+ *     column); z x4 measured 0.00056.
+ *  3. Sphere from a point, uniform R = 1: |T - r| over 0.5 <= r <= 1.2
+ *     must shrink with the grid (h = 0.1 -> 0.05: max error falls by a
+ *     factor >= 1.5; measured 1.8 and, off-node, 1.7: a point source
+ *     is first order whatever the scheme) and stay under 0.025 s at
+ *     h = 0.05 (measured 0.014, off-node 0.018); a rate grid
+ *     refined x2 must give the same T as the fine grid (1e-12: uniform
+ *     slowness makes them the same problem).
+ *  4. Distances to the sphere T = 1 from points at radius 0.85 and 1.15:
+ *     | d - 0.15 | <= 0.025 um (the solve's error at h = 0.05; measured
+ *     0.013).
+ *  5. Surface output: the plane at t = 0.5 lies at z = -tR (1e-9 um) and
+ *     has the box's area (1e-9 relative); developed through, only the
+ *     substrate; t = 0 is the flat top; the files read back with the
+ *     right sets, closed 4-point curves, the rate box as bounds, the 2D
+ *     file the projection of the 3D one, byte-identical on a rewrite.
+ *  6. A zero-rate half is never reached, and nothing in it is NaN.
+ *
+ * With arguments "bench nx ny nz [rz]" it instead times one solve on a
+ * standing-wave resist field (for tests/bench/fmm.sh; not a test).
+ */
+#include "fmm.h"
+#include "fmt_plot.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static int failures;
+
+#define CHECK(cond, ...) do { \
+	if (!(cond)) { \
+		failures++; \
+		printf("FAIL %s:%d: ", __FILE__, __LINE__); \
+		printf(__VA_ARGS__); \
+		printf("\n"); \
+	} \
+} while (0)
+
+static struct ratefile *uniform(int nx, int ny, int nz, const double b[6], double rate)
+{
+	struct ratefile *r = fmt_rate_new(nx, ny, nz, b);
+	size_t n = (size_t)nx * (size_t)ny * (size_t)nz;
+	for (size_t i = 0; i < n; i++)
+		r->arrays[0].v[i] = rate;
+	return r;
+}
+
+static double node_x(const struct fmm *f, int d, int i)
+{
+	return f->bounds[2 * d] + i * f->h[d];
+}
+
+/* 1. the plane front of a uniform rate */
+static void test_plane(void)
+{
+	const double b[6] = {0, 1, 0, 0.8, -1, 0}, R = 0.5;
+	struct ratefile *r = uniform(11, 9, 21, b, R);
+	struct fmm *f = fmm_solve(r, NULL);
+	double emax = 0;
+	for (int k = 0; k < f->n[2]; k++)
+		for (int j = 0; j < f->n[1]; j++)
+			for (int i = 0; i < f->n[0]; i++) {
+				size_t n = ((size_t)k * f->n[1] + j) * f->n[0] + i;
+				emax = fmax(emax, fabs(f->t[n] + node_x(f, 2, k) / R));
+			}
+	CHECK(emax < 1e-12, "plane: node error %g s", emax);
+	CHECK(f->accepted == 11 * 9 * 21, "plane: %ld nodes reached", f->accepted);
+	unsigned long s = 12345;
+	double eq = 0, ed = 0;
+	for (int q = 0; q < 200; q++) {
+		double p[3];
+		for (int d = 0; d < 3; d++) {
+			s = s * 6364136223846793005ul + 1442695040888963407ul;
+			double u = (double)(s >> 11) / 9007199254740992.0;
+			p[d] = b[2 * d] + u * (b[2 * d + 1] - b[2 * d]);
+		}
+		eq = fmax(eq, fabs(fmm_time_at(f, p) + p[2] / R));
+		double t = 0.7;    /* plane at z = -0.35 */
+		ed = fmax(ed, fabs(fmm_distance(f, p, t) - fabs(p[2] + t * R)));
+	}
+	CHECK(eq < 1e-12, "plane: trilinear query error %g s", eq);
+	CHECK(ed < 1e-9, "plane: distance error %g um", ed);
+	fmm_free(f);
+	fmt_rate_free(r);
+}
+
+/* 2. standing waves in z */
+static const double ZA = 0.5, ZK = 2 * M_PI / 0.1;
+
+static double ztest_error(const struct ratefile *r, int rz, int closed_form)
+{
+	int ref[3] = {1, 1, rz};
+	struct fmm *f = fmm_solve(r, ref);
+	double h = (r->zmax - r->zmin) / (r->nz - 1), exact = 0, emax = 0;
+	/* walk down from the top, integrating dz / R exactly over each
+	 * piecewise-linear segment: h ln(R1/R0) / (R1 - R0) */
+	for (int k = r->nz - 1; k >= 0; k--) {
+		if (k < r->nz - 1) {
+			double r0 = r->arrays[0].v[fmt_rate_index(r, 0, 0, k + 1)];
+			double r1 = r->arrays[0].v[fmt_rate_index(r, 0, 0, k)];
+			exact += fabs(r1 - r0) > 1e-14 * r0 ? h * log(r1 / r0) / (r1 - r0) : h / r0;
+		}
+		double z = fmt_rate_z(r, k);
+		double want = closed_form ? -z - ZA / ZK * sin(ZK * z) : exact;
+		for (int j = 0; j < r->ny; j++)
+			for (int i = 0; i < r->nx; i++) {
+				double p[3] = {fmt_rate_x(r, i), fmt_rate_y(r, j), z};
+				emax = fmax(emax, fabs(fmm_time_at(f, p) - want));
+			}
+	}
+	fmm_free(f);
+	return emax;
+}
+
+static void test_zonly(void)
+{
+	const double b[6] = {0, 0.2, 0, 0.2, -1, 0};
+	struct ratefile *r = fmt_rate_new(3, 3, 101, b);
+	for (int k = 0; k < r->nz; k++)
+		for (int j = 0; j < 3; j++)
+			for (int i = 0; i < 3; i++)
+				r->arrays[0].v[fmt_rate_index(r, i, j, k)] =
+					1 / (1 + ZA * cos(ZK * fmt_rate_z(r, k)));
+	double e1 = ztest_error(r, 1, 0), e4 = ztest_error(r, 4, 0);
+	double ec = ztest_error(r, 4, 1);
+	printf("z-only: error vs piecewise-linear integral %.3g s (plain), %.3g s (z x4); "
+	       "vs closed form %.3g s\n", e1, e4, ec);
+	CHECK(e4 * 8 < e1, "z-only: refining z by 4 took the error from %g to %g only", e1, e4);
+	CHECK(e1 < 0.013, "z-only: plain error %g s", e1);
+	CHECK(ec < 0.012, "z-only: error vs closed form %g s", ec);
+	fmt_rate_free(r);
+}
+
+/* triangle statistics through the iso_emit callback */
+struct tstat {
+	long n;
+	double area, zlo, zhi, nzmax;   /* nzmax: largest z of a unit normal */
+	double rad_err;                 /* max | |v| - 1 | (sphere) */
+	int nan;
+};
+
+static void tstat_emit(void *ctx, const double v[9])
+{
+	struct tstat *st = ctx;
+	double u[3], w[3];
+	for (int d = 0; d < 3; d++) {
+		u[d] = v[3 + d] - v[d];
+		w[d] = v[6 + d] - v[d];
+	}
+	double c[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+	double a = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+	if (st->n == 0)
+		st->zlo = st->zhi = v[2];
+	st->n++;
+	st->area += 0.5 * a;
+	if (a > 0)
+		st->nzmax = fmax(st->nzmax, c[2] / a);
+	for (int q = 0; q < 3; q++) {
+		for (int d = 0; d < 3; d++)
+			st->nan |= !isfinite(v[3 * q + d]);
+		st->zlo = fmin(st->zlo, v[3 * q + 2]);
+		st->zhi = fmax(st->zhi, v[3 * q + 2]);
+		double rr = sqrt(v[3 * q] * v[3 * q] + v[3 * q + 1] * v[3 * q + 1] +
+				 v[3 * q + 2] * v[3 * q + 2]);
+		st->rad_err = fmax(st->rad_err, fabs(rr - 1));
+	}
+}
+
+static struct tstat surface(const struct fmm *f, double t)
+{
+	struct tstat st;
+	memset(&st, 0, sizeof st);
+	st.nzmax = -1;
+	fmm_surface(f, t, tstat_emit, &st);
+	return st;
+}
+
+/* 3. sphere from a point */
+static double sphere_error(int n, const int ref[3], const double seed[3], struct fmm **keep)
+{
+	const double b[6] = {-1.2, 1.2, -1.2, 1.2, -1.2, 1.2};
+	struct ratefile *r = uniform(n, n, n, b, 1);
+	struct fmm *f = fmm_solve_points(r, ref, seed, 1);
+	double emax = 0;
+	for (int k = 0; k < f->n[2]; k++)
+		for (int j = 0; j < f->n[1]; j++)
+			for (int i = 0; i < f->n[0]; i++) {
+				double x = node_x(f, 0, i) - seed[0], y = node_x(f, 1, j) - seed[1];
+				double z = node_x(f, 2, k) - seed[2];
+				double rr = sqrt(x * x + y * y + z * z);
+				if (rr < 0.5 || rr > 1.2)
+					continue;
+				size_t m = ((size_t)k * f->n[1] + j) * f->n[0] + i;
+				emax = fmax(emax, fabs(f->t[m] - rr));
+			}
+	fmt_rate_free(r);
+	if (keep)
+		*keep = f;
+	else
+		fmm_free(f);
+	return emax;
+}
+
+static void test_sphere(void)
+{
+	const double c[3] = {0, 0, 0}, off[3] = {0.031, -0.017, 0.009};
+	int two[3] = {2, 2, 2};
+	struct fmm *fine, *refined;
+	double e1 = sphere_error(25, NULL, c, NULL);
+	double e2 = sphere_error(49, NULL, c, &fine);
+	double eo1 = sphere_error(25, NULL, off, NULL);
+	double eo2 = sphere_error(49, NULL, off, NULL);
+	sphere_error(25, two, c, &refined);
+	printf("sphere: max |T - r| %.3g s (h = 0.1), %.3g s (h = 0.05); "
+	       "off-node seed %.3g, %.3g\n", e1, e2, eo1, eo2);
+	CHECK(e2 * 1.5 < e1, "sphere: error %g -> %g does not shrink with the grid", e1, e2);
+	CHECK(eo2 * 1.5 < eo1, "sphere (off-node seed): error %g -> %g", eo1, eo2);
+	CHECK(e2 < 0.025 && eo2 < 0.025, "sphere: error %g, %g at h = 0.05", e2, eo2);
+	double dmax = 0;
+	CHECK(refined->n[0] == fine->n[0] && refined->n[2] == fine->n[2],
+	      "refined grid has %d nodes, want %d", refined->n[0], fine->n[0]);
+	size_t nn = (size_t)fine->n[0] * fine->n[1] * fine->n[2];
+	for (size_t m = 0; m < nn && refined->n[0] == fine->n[0]; m++)
+		dmax = fmax(dmax, fabs(refined->t[m] - fine->t[m]));
+	CHECK(dmax < 1e-12, "refined x2 and fine grid differ by %g s", dmax);
+
+	/* 4. distances to T = 1 */
+	double ed = 0;
+	for (int q = 0; q < 50; q++) {
+		double th = 0.7 * q, ph = 0.3 + 0.05 * q;
+		double u[3] = {cos(th) * sin(ph), sin(th) * sin(ph), cos(ph)};
+		for (int s = 0; s < 2; s++) {
+			double rad = s ? 1.15 : 0.85, p[3] = {rad * u[0], rad * u[1], rad * u[2]};
+			ed = fmax(ed, fabs(fmm_distance(fine, p, 1.0) - 0.15));
+		}
+	}
+	printf("sphere: distance error %.3g um\n", ed);
+	CHECK(ed < 0.025, "sphere: distance error %g um", ed);
+
+	struct tstat st = surface(fine, 1.0);
+	printf("sphere: %ld triangles of T = 1, vertices within %.3g um of r = 1\n", st.n, st.rad_err);
+	CHECK(st.n > 1000 && st.rad_err < 0.025, "sphere: %ld triangles, radius error %g um",
+	      st.n, st.rad_err);
+	fmm_free(fine);
+	fmm_free(refined);
+}
+
+static int same_file(const char *a, const char *b)
+{
+	FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+	int same = fa && fb;
+	while (same) {
+		int ca = getc(fa), cb = getc(fb);
+		same = ca == cb;
+		if (ca == EOF)
+			break;
+	}
+	if (fa)
+		fclose(fa);
+	if (fb)
+		fclose(fb);
+	return same;
+}
+
+/* 5. the developed surface and its files */
+static void test_surface(void)
+{
+	const double b[6] = {0, 1, 0, 0.8, -1, 0}, R = 0.5, box = 0.8;
+	struct ratefile *r = uniform(11, 9, 21, b, R);
+	struct fmm *f = fmm_solve(r, NULL);
+	struct tstat st = surface(f, 0.5);
+	CHECK(st.n > 0 && !st.nan, "plane: %ld triangles, nan %d", st.n, st.nan);
+	CHECK(fabs(st.zlo + 0.25) < 1e-9 && fabs(st.zhi + 0.25) < 1e-9,
+	      "plane t=0.5: z in [%.17g, %.17g], want -0.25", st.zlo, st.zhi);
+	CHECK(fabs(st.area - box) < 1e-9 * box, "plane: area %.17g, want %g", st.area, box);
+	CHECK(st.nzmax < -1 + 1e-9, "plane: a normal points up (nz %g)", st.nzmax);
+	st = surface(f, 3);     /* developed through at t = 2 */
+	CHECK(st.n > 0 && st.zlo == -1 && st.zhi == -1, "through: z in [%g, %g], want -1",
+	      st.zlo, st.zhi);
+	CHECK(fabs(st.area - box) < 1e-9 * box, "through: area %.17g, want %g", st.area, box);
+	st = surface(f, 0);
+	CHECK(st.n == 2 * 10 * 8 && st.zlo == 0 && st.zhi == 0, "t = 0: %ld triangles, z in [%g, %g]",
+	      st.n, st.zlo, st.zhi);
+	CHECK(fabs(st.area - box) < 1e-9 * box, "t = 0: area %.17g, want %g", st.area, box);
+	CHECK(st.nzmax < -1 + 1e-9, "t = 0: a normal points up");
+
+	const double times[3] = {0, 0.5, 3};
+	fmm_write_curves(f, times, 3, "c.plot", "c.plot.2D");
+	fmm_write_curves(f, times, 3, "d.plot", "d.plot.2D");
+	CHECK(same_file("c.plot", "d.plot") && same_file("c.plot.2D", "d.plot.2D"),
+	      "rewriting gave different bytes");
+	struct plot_file *p3 = fmt_plot_read("c.plot", 3), *p2 = fmt_plot_read("c.plot.2D", 2);
+	CHECK(p3->nsets == 3 && p2->nsets == 3, "%d and %d sets, want 3", p3->nsets, p2->nsets);
+	long bad = 0;
+	for (int k = 0; k < p3->nsets && k < p2->nsets; k++) {
+		struct plot_set *s3 = &p3->sets[k], *s2 = &p2->sets[k];
+		for (int d = 0; d < 6; d++)
+			bad += s3->bounds[d] != b[d] || (d < 4 && s2->bounds[d] != b[d]);
+		CHECK(s3->ncurves == s2->ncurves && s3->ncurves > 0, "set %d: %d and %d curves",
+		      k, s3->ncurves, s2->ncurves);
+		for (int c = 0; c < s3->ncurves && c < s2->ncurves; c++) {
+			const double *v = s3->curves[c].p, *w = s2->curves[c].p;
+			if (s3->curves[c].npts != 4 || s2->curves[c].npts != 4) {
+				bad++;
+				continue;
+			}
+			for (int d = 0; d < 3; d++)
+				bad += v[9 + d] != v[d];
+			for (int q = 0; q < 4; q++)
+				bad += w[2 * q] != v[3 * q] || w[2 * q + 1] != v[3 * q + 1];
+		}
+	}
+	CHECK(bad == 0, "%ld defects in the written sets (bounds, closure, projection)", bad);
+	fmt_plot_free(p3);
+	fmt_plot_free(p2);
+	fmm_free(f);
+	fmt_rate_free(r);
+}
+
+/* 6. a zero-rate half */
+static void test_zero(void)
+{
+	const double b[6] = {0, 1, 0, 0.8, -1, 0};
+	struct ratefile *r = uniform(11, 9, 21, b, 1);
+	for (int k = 0; k < r->nz; k++)
+		for (int j = 0; j < r->ny; j++)
+			for (int i = 0; i < 5; i++)
+				r->arrays[0].v[fmt_rate_index(r, i, j, k)] = 0;
+	struct fmm *f = fmm_solve(r, NULL);
+	long unreached = 0;
+	for (int k = 0; k < f->n[2] - 1; k++)
+		for (int j = 0; j < f->n[1]; j++)
+			for (int i = 0; i < 5; i++)
+				unreached += f->t[((size_t)k * f->n[1] + j) * f->n[0] + i] == FMM_UNREACHED;
+	CHECK(unreached == 5L * 9 * 20, "zero rate: %ld of %d nodes unreached", unreached, 5 * 9 * 20);
+	struct tstat st = surface(f, 0.5);
+	CHECK(st.n > 0 && !st.nan, "zero rate: %ld triangles, nan %d", st.n, st.nan);
+	double p[3] = {0.2, 0.4, -0.5}, q[3] = {0.8, 0.4, -0.3};
+	CHECK(fmm_distance(f, p, 0.5) == FMM_UNREACHED, "zero rate: distance in the unreached part");
+	CHECK(fabs(fmm_distance(f, q, 0.5) - 0.2) < 1e-9, "zero rate: distance %g, want 0.2",
+	      fmm_distance(f, q, 0.5));
+	fmm_free(f);
+	fmt_rate_free(r);
+}
+
+int main(int argc, char **argv)
+{
+	util_setprog("fmm_exact");
+	(void)argc;
+	(void)argv;
+	test_plane();
+	test_zonly();
+	test_sphere();
+	test_surface();
+	test_zero();
+	if (failures) {
+		printf("%d failures\n", failures);
+		return 1;
+	}
+	return 0;
+}
