@@ -1,6 +1,115 @@
 #!/bin/sh
-# sample3D - the SAMPLE-3D driver (thesis Appendix B, SAMPLE3D(L)).
-# Placeholder until splat, bleach and etch exist (issue 8).
+# sample3D - the SAMPLE-3D driver: runs splat, bleach and etch in turn and
+# plots the developed resist (thesis Appendix B, SAMPLE3D(L)).
+#
+#   sample3D -if mask.in -bf resist.in -et 30          splat, bleach, etch
+#   sample3D -cf image.cont -bf resist.in [-et 30]     bleach (and etch)
+#   sample3D -rb rval.3D.binary -et 30 -pt 10          etch only
+#   sample3D -ra rval.3D -et 30                        etch only
+#
+# A stage runs only when its inputs are known; a failing stage stops the run
+# with that stage's own message and a non-zero exit, leaving the outputs of
+# the earlier stages in place.  See man/man1/sample3D.1.
 set -eu
-echo "sample3D: the simulation programs are not built yet" >&2
-exit 1
+
+prog=sample3D
+usage() {
+	cat <<'U'
+usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
+                [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
+                [-et etchtime] [-pt printtime] [-plot] [-h] [etch options] [-q]
+  -if FILE    run splat on FILE; its contour-file goes on to bleach
+  -cf FILE    the aerial image (contour-file), bypassing splat
+  -bf FILE    run bleach with FILE (needs -if or -cf)
+  -solid      bleach also writes mxyz.solid.3D
+  -ascii      bleach writes rval.3D instead of rval.3D.binary
+  -rb FILE    binary etch-rate file, bypassing splat and bleach
+  -ra FILE    ASCII etch-rate file, bypassing splat and bleach
+  -et TIME    development time (s); etch runs only when it is given
+  -pt TIME    print interval (s)
+  -plot       interactive pdraw of the result (X11)
+  -h          hidden-line plot
+  -q          quiet: no progress lines
+  etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
+              -rl L -linear -clip N -cut x|y V -method ray|fmm
+              -etch "OPTS" passes any other etch options verbatim
+  --help      this text
+U
+}
+die() { echo "$prog: $*" >&2; exit 1; }
+bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
+say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
+need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
+
+splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
+printtime="" plot="" hidden="" quiet="" etchopts=""
+while [ $# -gt 0 ]; do
+	case $1 in
+	--help) usage; exit 0 ;;
+	-if) need_val "$@"; splat_in=$2; shift 2 ;;
+	-cf) need_val "$@"; contour=$2; shift 2 ;;
+	-bf) need_val "$@"; bleach_in=$2; shift 2 ;;
+	-solid) solid=-solid; shift ;;
+	-ascii) ascii=-ascii; shift ;;
+	-rb|-ra) need_val "$@"; rate=$2; shift 2 ;;
+	-et) need_val "$@"; etchtime=$2; shift 2 ;;
+	-pt) need_val "$@"; printtime=$2; shift 2 ;;
+	-plot) plot=yes; shift ;;
+	-h) hidden=-h; shift ;;
+	-q) quiet=-q; shift ;;
+	-linear) etchopts="$etchopts -linear"; shift ;;
+	-deloop)
+		# an optional step count follows
+		case ${2:-} in
+		[0-9]*) etchopts="$etchopts -deloop $2"; shift 2 ;;
+		*) etchopts="$etchopts -deloop"; shift ;;
+		esac ;;
+	-dt|-seg|-smax|-smin|-rl|-clip|-method)
+		need_val "$@"; etchopts="$etchopts $1 $2"; shift 2 ;;
+	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
+		etchopts="$etchopts -cut $2 $3"; shift 3 ;;
+	-etch) need_val "$@"; etchopts="$etchopts $2"; shift 2 ;;
+	*) bad "unknown option $1" ;;
+	esac
+done
+
+[ -n "$splat_in$contour$bleach_in$rate" ] || bad "nothing to do: give -if, -cf with -bf, -rb or -ra"
+[ -z "$rate" ] || [ -z "$splat_in$contour$bleach_in" ] ||
+	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
+[ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
+
+# splat: the contour-file is the one the input names (its "contour" line),
+# else splat's default splat.cont
+if [ -n "$splat_in" ]; then
+	[ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
+	contour=$(splat -name "$splat_in") || exit 1
+	say "splat $splat_in -> $contour"
+	splat $quiet "$splat_in" || die "splat failed; stopping"
+fi
+
+if [ -n "$bleach_in" ]; then
+	[ -n "$contour" ] || bad "-bf needs the aerial image: give -if or -cf"
+	if [ -n "$ascii" ]; then rate=rval.3D; else rate=rval.3D.binary; fi
+	say "bleach $contour $bleach_in -> $rate${solid:+ and mxyz.solid.3D}"
+	bleach $quiet $ascii $solid -o "$rate" "$contour" "$bleach_in" || die "bleach failed; stopping"
+elif [ -n "$contour" ] && [ -z "$splat_in" ]; then
+	bad "-cf needs -bf (the bleach input file)"
+fi
+
+if [ -z "$etchtime" ]; then
+	[ -z "$printtime" ] || say "no -et: etch does not run, -pt ignored"
+	exit 0
+fi
+[ -n "$rate" ] || bad "-et needs an etch-rate file: give -rb, -ra, or -bf"
+say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> curves.plot"
+# shellcheck disable=SC2086 # etchopts is a list of words on purpose
+etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts "$rate" ||
+	die "etch failed; stopping"
+
+if [ -n "$plot" ]; then
+	say "pdraw $hidden curves.plot (interactive)"
+	pdraw $hidden curves.plot || die "pdraw failed"
+else
+	say "pdraw -noplot $hidden curves.plot -> dataplot.ps"
+	pdraw -noplot $hidden curves.plot || die "pdraw failed"
+fi
