@@ -6,8 +6,9 @@
  * the TRIAL node of least T is accepted next and its neighbours are
  * updated from their KNOWN neighbours only, so T is computed in
  * increasing order and every node once: O(N log N) with a binary heap.
- * The heap holds (T, node) pairs by value, so sifting touches one array,
- * and an index per node gives the heap position for decrease-key.
+ * The heap (4-ary) holds (T, node) pairs by value, so sifting touches
+ * one array, and an index per node gives the heap position for
+ * decrease-key.
  *
  * The update (Sethian & Vladimirsky's second-order upwind scheme):
  * along each axis take the KNOWN neighbour of smaller T, T1; if the next
@@ -38,6 +39,10 @@ enum { FAR = 0, TRIAL = 1, KNOWN = 2 };
  * otherwise cost an O(h log h) error everywhere). */
 enum { SEED_CELLS = 2 };
 
+/* A 4-ary heap: half the depth of a binary one, and a node's children
+ * share a cache line. */
+enum { ARITY = 4 };
+
 struct heap_ent {
 	double t;
 	int32_t n;
@@ -60,7 +65,7 @@ static void sift_up(struct solver *s, size_t i)
 {
 	struct heap_ent e = s->heap[i];
 	while (i > 0) {
-		size_t p = (i - 1) / 2;
+		size_t p = (i - 1) / ARITY;
 		if (s->heap[p].t <= e.t)
 			break;
 		s->heap[i] = s->heap[p];
@@ -71,24 +76,30 @@ static void sift_up(struct solver *s, size_t i)
 	s->pos[e.n] = (int32_t)i;
 }
 
-static void sift_down(struct solver *s, size_t i)
+/* Removing the root: the hole walks down to a leaf along the smaller
+ * children, then the last entry is sifted up from there (Floyd's
+ * bottom-up deletion; the last entry almost always belongs near the
+ * bottom, so this saves a comparison per level). */
+static void remove_root(struct solver *s)
 {
-	struct heap_ent e = s->heap[i];
-	size_t n = s->nheap;
+	size_t n = s->nheap, i = 0;
 	for (;;) {
-		size_t c = 2 * i + 1;
+		size_t c = ARITY * i + 1;
 		if (c >= n)
 			break;
-		if (c + 1 < n && s->heap[c + 1].t < s->heap[c].t)
-			c++;
-		if (e.t <= s->heap[c].t)
-			break;
-		s->heap[i] = s->heap[c];
+		size_t best = c, end = c + ARITY < n ? c + ARITY : n;
+		for (size_t q = c + 1; q < end; q++)
+			if (s->heap[q].t < s->heap[best].t)
+				best = q;
+		s->heap[i] = s->heap[best];
 		s->pos[s->heap[i].n] = (int32_t)i;
-		i = c;
+		i = best;
 	}
-	s->heap[i] = e;
-	s->pos[e.n] = (int32_t)i;
+	if (i != n - 1) {
+		s->heap[i] = s->heap[n - 1];
+		sift_up(s, i);
+	}
+	s->nheap = n - 1;
 }
 
 /* Makes node n TRIAL with time t, or lowers its time to t. */
@@ -112,11 +123,7 @@ static void offer(struct solver *s, size_t n, double t)
 static size_t pop(struct solver *s)
 {
 	size_t n = (size_t)s->heap[0].n;
-	s->nheap--;
-	if (s->nheap) {
-		s->heap[0] = s->heap[s->nheap];
-		sift_down(s, 0);
-	}
+	remove_root(s);
 	return n;
 }
 

@@ -364,11 +364,52 @@ static void test_zero(void)
 	fmt_rate_free(r);
 }
 
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* bench nx ny nz [rz]: a developed contact hole in a resist with standing
+ * waves (period 0.14 um, thesis Figure 8.16's kind of field) */
+static int bench(int argc, char **argv)
+{
+	if (argc < 5)
+		die("usage: fmm_exact bench nx ny nz [rz]");
+	int nx = atoi(argv[2]), ny = atoi(argv[3]), nz = atoi(argv[4]);
+	int ref[3] = {1, 1, argc > 5 ? atoi(argv[5]) : 1};
+	if (nx < 2 || ny < 2 || nz < 2 || ref[2] < 1)
+		die("bench: bad sizes");
+	const double b[6] = {-1, 1, -1, 1, -1, 0};
+	struct ratefile *r = fmt_rate_new(nx, ny, nz, b);
+	for (int k = 0; k < nz; k++)
+		for (int j = 0; j < ny; j++)
+			for (int i = 0; i < nx; i++) {
+				double x = fmt_rate_x(r, i), y = fmt_rate_y(r, j), z = fmt_rate_z(r, k);
+				r->arrays[0].v[fmt_rate_index(r, i, j, k)] =
+					0.005 + 0.1 * exp(-(x * x + y * y) / 0.3) *
+					(1 + 0.6 * cos(2 * M_PI * z / 0.14));
+			}
+	double t0 = now();
+	struct fmm *f = fmm_solve(r, ref);
+	double t1 = now();
+	struct tstat st = surface(f, 20);
+	double t2 = now();
+	printf("fmm %dx%dx%d (z x%d: %d nodes): solve %.3f s (%.1f Mnodes/s), "
+	       "surface T = 20 s %.3f s (%ld triangles)\n", nx, ny, nz, ref[2],
+	       f->n[0] * f->n[1] * f->n[2], t1 - t0,
+	       f->n[0] * (double)f->n[1] * f->n[2] / (t1 - t0) * 1e-6, t2 - t1, st.n);
+	fmm_free(f);
+	fmt_rate_free(r);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog("fmm_exact");
-	(void)argc;
-	(void)argv;
+	if (argc > 1 && strcmp(argv[1], "bench") == 0)
+		return bench(argc, argv);
 	test_plane();
 	test_zonly();
 	test_sphere();
