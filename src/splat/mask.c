@@ -1,0 +1,186 @@
+/*
+ * mask.c - Fourier coefficients of the periodic mask (thesis 2.2.1: SPLAT
+ * images a mask that repeats with the period of the simulation window).
+ *
+ * Rects are painted over the background in file order, so overlapping
+ * rects are not additive.  The window is therefore cut into the cells of
+ * the grid made by every rect edge; each cell takes the transmission of
+ * the last rect covering it.  A cell is a rectangle of constant complex
+ * transmission tau, whose coefficient is separable and exact:
+ *   c(m, n) = tau_bg delta(m) delta(n)
+ *           + sum_cells (tau - tau_bg) X(m) Y(n),
+ *   X(m) = (w/Lx) sinc(pi m w/Lx) exp(-i pi m (xa + xb)/Lx),  w = xb - xa,
+ * so no sampling of the mask (and no aliasing) enters the image.
+ */
+#include "splat.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static double clampd(double v, double lo, double hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* Sorted distinct edges of the rects along one axis, window ends included. */
+static int edges(const struct splat_mask *m, int axis, double lo, double hi, double **out)
+{
+	double *e = xreallocarray(NULL, 2 * (size_t)m->nrects + 2, sizeof *e);
+	int n = 0;
+	e[n++] = lo;
+	e[n++] = hi;
+	for (int i = 0; i < m->nrects; i++) {
+		const struct splat_rect *r = &m->rects[i];
+		e[n++] = clampd(axis ? r->y1 : r->x1, lo, hi);
+		e[n++] = clampd(axis ? r->y2 : r->x2, lo, hi);
+	}
+	qsort(e, (size_t)n, sizeof *e, cmp_double);
+	int k = 0;
+	for (int i = 0; i < n; i++)
+		if (k == 0 || e[i] > e[k - 1])
+			e[k++] = e[i];
+	*out = e;
+	return k;
+}
+
+/* Index of v in the sorted array e (v is one of its values). */
+static int find(const double *e, int n, double v)
+{
+	int lo = 0, hi = n - 1;
+	while (lo < hi) {
+		int mid = (lo + hi) / 2;
+		if (e[mid] < v)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+static double complex phasor(double t, double deg)
+{
+	double a = deg * (M_PI / 180);
+	return t * cos(a) + I * (t * sin(a));
+}
+
+/* (1/L) integral over [a, b] of exp(-2 pi i q x / L) dx, for q = -qmax..qmax. */
+static void interval_ft(double a, double b, double len, int qmax, double complex *out)
+{
+	double w = (b - a) / len, c = (a + b) / len;
+	for (int q = -qmax; q <= qmax; q++) {
+		double arg = M_PI * q * w;
+		double sinc = q == 0 ? 1 : sin(arg) / arg;
+		double ph = -M_PI * q * c;
+		out[q + qmax] = w * sinc * (cos(ph) + I * sin(ph));
+	}
+}
+
+struct orders *mask_orders(const struct splat_mask *m, double fmax)
+{
+	struct orders *o = xcalloc(1, sizeof *o);
+	o->lx = m->xmax - m->xmin;
+	o->ly = m->ymax - m->ymin;
+	/* the 1e-9 keeps an order lying exactly on fmax (a coherent grating
+	 * order on the pupil edge) from depending on rounding */
+	double fm = fmax * (1 + 1e-9);
+	o->mmax = (int)floor(fm * o->lx);
+	o->nmax = (int)floor(fm * o->ly);
+	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
+
+	/* the cells and their transmissions */
+	double *ex, *ey;
+	int nex = edges(m, 0, m->xmin, m->xmax, &ex);
+	int ney = edges(m, 1, m->ymin, m->ymax, &ey);
+	int cx = nex - 1, cy = ney - 1;
+	double complex bg = phasor(m->bg_t, m->bg_phase);
+	double complex *tau = xreallocarray(NULL, (size_t)cx * (size_t)cy, sizeof *tau);
+	for (size_t i = 0; i < (size_t)cx * (size_t)cy; i++)
+		tau[i] = bg;
+	for (int r = 0; r < m->nrects; r++) {
+		const struct splat_rect *re = &m->rects[r];
+		int i0 = find(ex, nex, clampd(re->x1, m->xmin, m->xmax));
+		int i1 = find(ex, nex, clampd(re->x2, m->xmin, m->xmax));
+		int j0 = find(ey, ney, clampd(re->y1, m->ymin, m->ymax));
+		int j1 = find(ey, ney, clampd(re->y2, m->ymin, m->ymax));
+		double complex t = phasor(re->t, re->phase);
+		for (int j = j0; j < j1; j++)
+			for (int i = i0; i < i1; i++)
+				tau[(size_t)j * cx + i] = t;
+	}
+
+	/* C(m, n) = sum_i X_i(m) S_i(n),  S_i(n) = sum_j dtau_ij Y_j(n) */
+	double complex *cc = xcalloc((size_t)nm * nn, sizeof *cc);
+	double complex *xf = xreallocarray(NULL, (size_t)nm, sizeof *xf);
+	double complex *yf = xreallocarray(NULL, (size_t)cy * nn, sizeof *yf);
+	double complex *s = xreallocarray(NULL, (size_t)nn, sizeof *s);
+	for (int j = 0; j < cy; j++)
+		interval_ft(ey[j], ey[j + 1], o->ly, o->nmax, yf + (size_t)j * nn);
+	for (int i = 0; i < cx; i++) {
+		int any = 0;
+		for (int q = 0; q < nn; q++)
+			s[q] = 0;
+		for (int j = 0; j < cy; j++) {
+			double complex d = tau[(size_t)j * cx + i] - bg;
+			if (d == 0)
+				continue;
+			any = 1;
+			for (int q = 0; q < nn; q++)
+				s[q] += d * yf[(size_t)j * nn + q];
+		}
+		if (!any)
+			continue;
+		interval_ft(ex[i], ex[i + 1], o->lx, o->mmax, xf);
+		for (int q = 0; q < nn; q++)
+			for (int p = 0; p < nm; p++)
+				cc[(size_t)q * nm + p] += xf[p] * s[q];
+	}
+	cc[(size_t)o->nmax * nm + o->mmax] += bg;
+
+	/* keep the orders inside the circle |f| <= fmax */
+	size_t cap = (size_t)nm * nn;
+	o->m = xreallocarray(NULL, cap, sizeof *o->m);
+	o->k = xreallocarray(NULL, cap, sizeof *o->k);
+	o->fx = xreallocarray(NULL, cap, sizeof *o->fx);
+	o->fy = xreallocarray(NULL, cap, sizeof *o->fy);
+	o->c = xreallocarray(NULL, cap, sizeof *o->c);
+	for (int q = -o->nmax; q <= o->nmax; q++)
+		for (int p = -o->mmax; p <= o->mmax; p++) {
+			double fx = p / o->lx, fy = q / o->ly;
+			if (hypot(fx, fy) > fm)
+				continue;
+			o->m[o->n] = p;
+			o->k[o->n] = q;
+			o->fx[o->n] = fx;
+			o->fy[o->n] = fy;
+			o->c[o->n] = cc[(size_t)(q + o->nmax) * nm + p + o->mmax];
+			o->n++;
+		}
+	free(ex);
+	free(ey);
+	free(tau);
+	free(cc);
+	free(xf);
+	free(yf);
+	free(s);
+	return o;
+}
+
+void mask_orders_free(struct orders *o)
+{
+	if (!o)
+		return;
+	free(o->m);
+	free(o->k);
+	free(o->fx);
+	free(o->fy);
+	free(o->c);
+	free(o);
+}

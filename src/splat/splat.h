@@ -1,0 +1,115 @@
+/*
+ * splat.h - the pieces of splat(L), the Hopkins aerial-image program
+ * (thesis 2.2.1, 9.2-9.3), shared by its files and its unit tests.
+ *
+ * The computation runs in four stages, one file each:
+ *   mask.c    Fourier coefficients c(f) of the periodic mask;
+ *   pupil.c   the pupil P(g) = exp(i Phi(g)) inside NA/lambda, with the
+ *             defocus and aberration phase Phi;
+ *   source.c  the effective source as signed discs, and the exact
+ *             integral over the intersection of three discs (a source
+ *             disc and two shifted pupils) that every TCC needs;
+ *   tcc.c     the Hopkins sum over pairs of orders, collapsed into the
+ *             image spectrum A(df) = sum TCC(f', f'') c(f') c*(f'') over
+ *             the pairs with f' - f'' = df;
+ *   image.c   the image I(r) = sum A(df) exp(2 pi i df.r) on the grid and
+ *             along cutlines.
+ */
+#ifndef SPLAT_SPLAT_H
+#define SPLAT_SPLAT_H
+
+#include "fmt_splat.h"
+
+#include <complex.h>
+
+/* Diffraction orders f = (m/Lx, n/Ly) of the periodic mask that can
+ * reach the pupil, with their Fourier coefficients. */
+struct orders {
+	double lx, ly;          /* period (window size), micrometres */
+	int mmax, nmax;         /* |m| <= mmax, |n| <= nmax */
+	int n;                  /* number of orders kept */
+	int *m, *k;             /* order indices (x, y) */
+	double *fx, *fy;        /* spatial frequency, 1/micrometre */
+	double complex *c;      /* Fourier coefficient */
+};
+
+/* Orders with |f| <= fmax (1/um) and their coefficients c(f) =
+ * (1/(Lx Ly)) integral over the window of t e^{i phase} e^{-2 pi i f.r}. */
+struct orders *mask_orders(const struct splat_mask *m, double fmax);
+void mask_orders_free(struct orders *o);
+
+struct pupil {
+	double lambda, na;
+	double cutoff;          /* NA/lambda, 1/um */
+	double defocus;         /* micrometres */
+	int naberr;
+	const struct splat_aberr *aberr;
+	int flat;               /* 1 if Phi == 0 everywhere (no defocus, no aberration) */
+	double waves;           /* bound on |W + W_defocus| in waves */
+};
+
+void pupil_init(struct pupil *p, const struct splat_input *in);
+/* Phi(g) in radians at pupil frequency g (1/um), |g| <= cutoff. */
+double pupil_phase(const struct pupil *p, double gx, double gy);
+/* Fringe Zernike term n (1..37) at normalised radius rho and angle theta. */
+double pupil_zernike(int n, double rho, double theta);
+
+/* The effective source as signed uniform discs (an annulus is a disc
+ * minus a disc), in 1/um. */
+enum { SOURCE_MAX_DISCS = 4 };
+struct source {
+	int coherent;           /* sigma 0: a single point at the origin */
+	int ndisc;
+	double cx[SOURCE_MAX_DISCS], cy[SOURCE_MAX_DISCS], r[SOURCE_MAX_DISCS];
+	double sign[SOURCE_MAX_DISCS];
+	double smax;            /* largest |s| on the source, 1/um */
+};
+
+void source_init(struct source *s, const struct splat_input *in, double cutoff);
+
+/* Quadrature orders: Gauss-Legendre points per piece across (outer, y)
+ * and along (inner, x) the source rows. */
+struct quad {
+	int nouter, ninner;
+	double *uo, *wo, *ui, *wi;  /* nodes and weights on [-1, 1] */
+};
+void quad_init(struct quad *q, int nouter, int ninner);
+void quad_free(struct quad *q);
+/* Gauss-Legendre nodes and weights of order n on [-1, 1]. */
+void quad_gauss(int n, double *u, double *w);
+/* Default orders for a pupil, chosen from its phase excursion. */
+void quad_default(const struct pupil *p, int *nouter, int *ninner);
+
+/* Integral over the disc (cx, cy, r) intersected with the pupil discs of
+ * orders f1 and f2 (centres -f1, -f2, radius cutoff) of
+ * P(s + f1) P*(s + f2) ds. */
+double complex source_disc3(const struct pupil *p, const struct quad *q,
+			    double cx, double cy, double r,
+			    double f1x, double f1y, double f2x, double f2y);
+
+/* The image spectrum: A[(dn + 2 nmax) * (4 mmax + 1) + dm + 2 mmax]. */
+struct spectrum {
+	double lx, ly;
+	int mmax, nmax;         /* |dm| <= 2 mmax, |dn| <= 2 nmax */
+	double complex *a;
+	long pairs;             /* TCC pairs computed, for the progress line */
+};
+
+/* Hopkins: the spectrum for orders o, pupil p, source s, normalised so
+ * that a clear mask images to exactly 1.  Returns NULL if no light from
+ * the source passes the pupil. */
+struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
+			      const struct source *s, const struct quad *q);
+void spectrum_free(struct spectrum *sp);
+
+/* The whole computation for an input, with quadrature orders (0: the
+ * defaults); used by main and the tests. */
+struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ninner,
+				int *norders);
+
+/* Intensity at one point, and on the contour grid (z[j*nx + i]). */
+double image_at(const struct spectrum *sp, double x, double y);
+void image_grid(const struct spectrum *sp, double xmin, double xmax, double ymin,
+		double ymax, int nx, int ny, double *z);
+
+#endif
