@@ -13,6 +13,9 @@
 #include <unistd.h>
 
 static const char *progname = "sample3d";
+static int die_code = EXIT_RUNTIME;
+
+void util_set_die_status(int status) { die_code = status; }
 
 enum { MAX_TEMPS = 32 };
 static char *temps[MAX_TEMPS];
@@ -54,7 +57,7 @@ void die(const char *fmt, ...)
 	vmsg(fmt, ap);
 	va_end(ap);
 	remove_temps();
-	exit(EXIT_RUNTIME);
+	exit(die_code);
 }
 
 void die_status(int status, const char *fmt, ...)

@@ -21,6 +21,10 @@ enum { EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 void util_setprog(const char *argv0);
 const char *util_prog(void);
 
+/* The status die() exits with (default EXIT_RUNTIME); programs whose exit
+ * 1 means something else (plotdiff: "files differ") set another. */
+void util_set_die_status(int status);
+
 /* "prog: message\n" on stderr and exit(1).  A format ending in ':'
  * appends strerror(errno). */
 _Noreturn void die(const char *fmt, ...)
