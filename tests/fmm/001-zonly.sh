@@ -5,8 +5,7 @@
 # T = 1.25 s).  Checks, against that closed form, that every vertex of
 # curves.plot at t = 0.3 and 0.8 s lies at the depth where T = t within
 # 2e-4 um (1/50 of a rate-grid cell; measured 3.4e-5: a second-order solve
-# on a rate whose
-# linear interpolation error is 1e-5 s); that t = 0 is the flat top and
+# on a rate whose linear interpolation error is 1e-5 s); that t = 0 is the flat top and
 # t = 2 s the substrate exactly; that the bounds line is the rate box; that
 # curves.plot.2D holds the same triangles projected on x-y; and that the
 # ASCII and binary rate files give byte-identical outputs.
