@@ -1,0 +1,99 @@
+/*
+ * etch.h - the ray-string development engine (thesis chapters 7 and 8):
+ * options, statistics, and the steps of one simulation, each in its own
+ * file: start.c (initial surface), advance.c (ray advance), modify.c
+ * (cutting and merging), clip.c (clipping), deloop.c (placeholder),
+ * output.c (plot files) and run.c (the time loop of thesis 8.3).
+ */
+#ifndef ETCH_ETCH_H
+#define ETCH_ETCH_H
+
+#include "mesh.h"
+#include "rate.h"
+
+/* Defaults (thesis values where the thesis gives one). */
+#define ETCH_SMAX 1.2           /* S_max / S_ideal, thesis 7.5.1.1 and 8.4.1.3 */
+#define ETCH_SMIN 0.2           /* S_min / S_ideal, thesis 8.4.1.2, Figure 8.7b */
+#define ETCH_RL 0.1             /* recursive length, thesis 7.4.2 (about 4 degrees) */
+#define ETCH_CLIP 10            /* clip every 10 steps, thesis 8.4.2 footnote */
+#define ETCH_SEG_DIVISIONS 30   /* default S_ideal: the larger side of the box / 30
+                                 * (the thesis' 2D runs used 30-100 segments) */
+/* Default time step: the fraction of 1 / max|grad R| (thesis [7.4]) used.
+ * [7.4] only keeps the rays from reflecting; a quarter of it keeps the
+ * front within 1e-3 of the exact depth on 10:1 standing waves with the
+ * fourth-order advance (tests/etch/040-zonly.sh). */
+#define ETCH_DT_GRAD 0.25
+
+enum method { METHOD_RAY, METHOD_FMM };
+
+struct etch_opts {
+	double et, pt, dt;      /* s; pt <= 0: only the end; dt <= 0: default */
+	double seg;             /* S_ideal, um; <= 0: default */
+	double smax, smin;      /* ratios to S_ideal */
+	double rl;              /* recursive length */
+	int linear;             /* linear instead of arc interpolation */
+	int euler;              /* the thesis' first-order step [6.7] + [A.33] */
+	long clip_every;
+	int deloop;
+	int check;              /* run mesh_check after every step */
+	int quiet;
+	int seed;               /* start from a seed point */
+	double seedp[3];
+	int cut_axis;           /* -1 none, 0 x, 1 y */
+	double cut_value;
+	enum method method;
+	const char *out3d, *out2d, *outcut;
+	const char *input;
+};
+
+struct etch_stats {
+	double dt;              /* step used, s */
+	double dt_grad;         /* 1 / max|grad R| (s), 0 if the rate is uniform */
+	double seg;             /* S_ideal used, um */
+	long steps, substeps, halvings;
+	long cuts, merges, refused, clips, clipped_tris, stopped;
+	long max_nodes, max_tris;
+};
+
+/* start.c: the flat resist top (a regular triangulation of z = zmax with
+ * segments of length seg, rays (0, 0, -1)) or a seed point. */
+void start_flat(struct mesh *m, const struct rfield *f, double seg);
+void start_seed(struct mesh *m, const double p[3]);
+
+/* advance.c: moves every node by dt along its ray (thesis 8.3 [I]). */
+void advance_mesh(struct mesh *m, const struct rfield *f, double dt,
+		  const struct etch_opts *o, struct etch_stats *st);
+
+/* modify.c: the triangle-based mesh modification of thesis 8.4.1.3. */
+void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
+		 const struct etch_opts *o, struct etch_stats *st);
+/* The new node between nodes a and b: on the arc their rays define
+ * (thesis Figure 7.6b) or, if linear, on the chord; its ray interpolated. */
+void interp_node(const struct node *a, const struct node *b, int linear,
+		 double p[3], double r[3]);
+
+/* clip.c: clipping against the six faces of the box (thesis 8.4.2). */
+void clip_mesh(struct mesh *m, const struct rfield *f, struct etch_stats *st);
+
+/* deloop.c: delooping (thesis 8.4.3) - a later issue. */
+long deloop_mesh(struct mesh *m);
+
+/* output.c */
+struct etch_out;
+struct etch_out *out_open(const struct etch_opts *o, const struct rfield *f);
+void out_write(struct etch_out *w, const struct mesh *m);
+void out_close(struct etch_out *w);
+/* The profile where the plane (axis = value) cuts the mesh, as polylines
+ * of (other horizontal coordinate, z) points; for tests too. */
+struct plot_file;
+void out_cut(const struct mesh *m, int axis, double value, struct plot_file *pf,
+	     const double *bounds);
+
+/* run.c: the whole simulation; returns the final mesh. */
+struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
+		      struct etch_stats *st);
+/* The default time step and ideal segment length for f (thesis 7.4.1). */
+double etch_default_dt(const struct rfield *f, double seg, double et);
+double etch_default_seg(const struct rfield *f);
+
+#endif

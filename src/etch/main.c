@@ -1,0 +1,241 @@
+/*
+ * etch - 3D development of a resist by the ray-string algorithm (thesis
+ * chapters 7 and 8): a triangulated surface is moved through the etch-rate
+ * array of bleach, each node along a ray obeying the ray equation.  See
+ * man/man1/etch.1 and etch.h.
+ */
+#include "args.h"
+#include "etch.h"
+#include "fmm.h"
+#include "fmt_rate.h"
+#include "num.h"
+#include "util.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage[] =
+	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
+	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
+	"            [-deloop] [-cut x|y value] [-seed x y z] [-method ray|fmm]\n"
+	"            [-o curves.plot] [-check] [-q] rate-file\n"
+	"  -et etchtime     total development time, s (required)\n"
+	"  -pt printtime    print interval, s (default: only the end)\n"
+	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
+	"                   at most S_ideal / max R)\n"
+	"  -seg length      ideal segment length S_ideal, um (default: box side / 30)\n"
+	"  -smax r          cut segments longer than r S_ideal (default 1.2)\n"
+	"  -smin r          merge segments shorter than r S_ideal (default 0.2)\n"
+	"  -rl length       recursive length of vector checking (default 0.1)\n"
+	"  -linear          place new nodes by linear, not arc, interpolation\n"
+	"  -euler           the thesis' first-order ray step instead of Runge-Kutta\n"
+	"  -clip n          clip the mesh every n steps (default 10)\n"
+	"  -deloop          remove loops (not implemented yet: accepted, no effect)\n"
+	"  -cut x|y value   also write the profile in the plane x (y) = value\n"
+	"                   to curves.cut\n"
+	"  -seed x y z      start from a seed point instead of the resist top\n"
+	"  -method ray|fmm  ray-string (default) or fast-marching engine\n"
+	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
+	"                   the cut to curves.cut\n"
+	"  -check           check the mesh's consistency after every step\n"
+	"  -q               no progress or summary on stderr\n";
+
+static int parse3(struct args *a, const char *opt, double v[3])
+{
+	if (a->i >= a->argc || strcmp(a->argv[a->i], opt) != 0)
+		return 0;
+	a->i++;
+	for (int k = 0; k < 3; k++) {
+		if (a->i >= a->argc || !num_parse(a->argv[a->i], &v[k])) {
+			args_error(a, "option %s needs three numbers", opt);
+			return 1;
+		}
+		a->i++;
+	}
+	return 1;
+}
+
+static void parse_options(int argc, char **argv, struct etch_opts *o)
+{
+	struct args a;
+	args_init(&a, argc, argv);
+	memset(o, 0, sizeof *o);
+	o->et = -1;
+	o->smax = ETCH_SMAX;
+	o->smin = ETCH_SMIN;
+	o->rl = ETCH_RL;
+	o->clip_every = ETCH_CLIP;
+	o->cut_axis = -1;
+	o->out3d = "curves.plot";
+	const char *method = "ray", *cutaxis = NULL;
+	while (a.i < argc) {
+		const char *s = argv[a.i];
+		if (args_help(&a)) {
+			fputs(usage, stdout);
+			fshut(stdout, "stdout");
+			exit(0);
+		}
+		if (args_num(&a, "-et", 0, 1e12, &o->et) ||
+		    args_num(&a, "-pt", 0, 1e12, &o->pt) ||
+		    args_num(&a, "-dt", 0, 1e12, &o->dt) ||
+		    args_num(&a, "-seg", 0, 1e12, &o->seg) ||
+		    args_num(&a, "-smax", 0, 1e6, &o->smax) ||
+		    args_num(&a, "-smin", 0, 1e6, &o->smin) ||
+		    args_num(&a, "-rl", 0, 2, &o->rl) ||
+		    args_int(&a, "-clip", 1, 1000000000, &o->clip_every) ||
+		    args_str(&a, "-o", &o->out3d) ||
+		    args_str(&a, "-method", &method))
+			;
+		else if (args_flag(&a, "-linear"))
+			o->linear = 1;
+		else if (args_flag(&a, "-euler"))
+			o->euler = 1;
+		else if (args_flag(&a, "-deloop"))
+			o->deloop = 1;
+		else if (args_flag(&a, "-check"))
+			o->check = 1;
+		else if (args_flag(&a, "-q"))
+			o->quiet = 1;
+		else if (parse3(&a, "-seed", o->seedp))
+			o->seed = 1;
+		else if (strcmp(s, "-cut") == 0) {
+			if (a.i + 2 >= argc || !num_parse(argv[a.i + 2], &o->cut_value)) {
+				args_error(&a, "option -cut needs x or y and a number");
+				a.i = argc;
+			} else {
+				cutaxis = argv[a.i + 1];
+				a.i += 3;
+			}
+		} else if (s[0] == '-' && s[1] != '\0')
+			args_unknown(&a);
+		else if (!o->input)
+			o->input = argv[a.i++];
+		else
+			args_error(&a, "more than one rate file (%.60s)", argv[a.i++]);
+	}
+	if (!o->input)
+		args_error(&a, "no rate file");
+	if (o->et < 0)
+		args_error(&a, "-et etchtime is required");
+	else if (!(o->et > 0))
+		args_error(&a, "-et must be positive");
+	if (o->dt < 0 || o->seg < 0 || o->pt < 0)
+		args_error(&a, "-dt, -seg and -pt must be positive");
+	if (o->smax > 0 && o->smin * 2 >= o->smax)
+		args_error(&a, "-smin must be less than half of -smax "
+			   "(a cut segment would be merged again)");
+	if (!(o->smax > 1) && o->smax != 0)
+		args_error(&a, "-smax must be greater than 1");
+	if (!(o->rl > 0))
+		args_error(&a, "-rl must be positive");
+	if (strcmp(method, "ray") == 0)
+		o->method = METHOD_RAY;
+	else if (strcmp(method, "fmm") == 0)
+		o->method = METHOD_FMM;
+	else
+		args_error(&a, "-method must be ray or fmm, not %.40s", method);
+	if (cutaxis) {
+		if (strcmp(cutaxis, "x") == 0)
+			o->cut_axis = 0;
+		else if (strcmp(cutaxis, "y") == 0)
+			o->cut_axis = 1;
+		else
+			args_error(&a, "-cut takes x or y, not %.40s", cutaxis);
+	}
+	args_done(&a, usage);
+}
+
+/* out3d.2D, and out3d with .plot replaced by .cut */
+static void output_names(struct etch_opts *o, char **n2, char **nc)
+{
+	size_t len = strlen(o->out3d);
+	*n2 = xmalloc(len + 4);
+	sprintf(*n2, "%s.2D", o->out3d);
+	*nc = xmalloc(len + 5);
+	if (len > 5 && strcmp(o->out3d + len - 5, ".plot") == 0)
+		sprintf(*nc, "%.*s.cut", (int)(len - 5), o->out3d);
+	else
+		sprintf(*nc, "%s.cut", o->out3d);
+	o->out2d = *n2;
+	o->outcut = o->cut_axis >= 0 ? *nc : NULL;
+}
+
+static void check_inside(const struct rfield *f, const struct etch_opts *o)
+{
+	for (int d = 0; d < 3; d++)
+		if (o->seed && (o->seedp[d] < f->lo[d] || o->seedp[d] > f->hi[d]))
+			die_status(EXIT_USAGE, "-seed point outside the rate box "
+				   "(%c from %g to %g)", "xyz"[d], f->lo[d], f->hi[d]);
+	if (o->cut_axis >= 0) {
+		int d = o->cut_axis;
+		if (o->cut_value < f->lo[d] || o->cut_value > f->hi[d])
+			die_status(EXIT_USAGE, "-cut %c %g is outside the rate box (%g to %g)",
+				   "xy"[d], o->cut_value, f->lo[d], f->hi[d]);
+	}
+}
+
+/* The fast-marching engine (fmm.h, written separately): arrival times on
+ * the grid, isosurfaces at the print times.  It has no -cut output yet. */
+static void run_fmm(const struct ratefile *r, const struct etch_opts *o)
+{
+	struct fmm *fm = o->seed ? fmm_solve_points(r, NULL, o->seedp, 1) : fmm_solve(r, NULL);
+	int n = 0;
+	double *times = NULL;
+	size_t cap = 0;
+	for (long k = 1;; k++) {
+		double tp = o->pt > 0 ? k * o->pt : o->et;
+		if (tp > o->et * (1 - 1e-12))
+			tp = o->et;
+		xgrow(&times, &cap, (size_t)n + 1, sizeof *times);
+		times[n++] = tp;
+		if (tp >= o->et)
+			break;
+	}
+	fmm_write_curves(fm, times, n, o->out3d, o->out2d);
+	if (!o->quiet)
+		fprintf(stderr, "%s: fast marching: %ld grid nodes reached, %d sets written\n",
+			util_prog(), fm->accepted, n);
+	free(times);
+	fmm_free(fm);
+}
+
+int main(int argc, char **argv)
+{
+	struct etch_opts o;
+	parse_options(argc, argv, &o);
+	char *n2, *nc;
+	output_names(&o, &n2, &nc);
+	struct ratefile *r = fmt_rate_read(o.input);
+	struct rfield f;
+	rfield_init(&f, r, o.input);
+	check_inside(&f, &o);
+	if (o.method == METHOD_FMM) {
+		run_fmm(r, &o);
+	} else {
+		struct etch_stats st = {0};
+		struct mesh *m = etch_run(&f, &o, &st);
+		if (!o.quiet) {
+			fprintf(stderr, "%s: done: %g s in %ld steps of %g s (%s); S_ideal %g um\n",
+				util_prog(), o.et, st.steps, st.dt,
+				o.dt > 0 ? "-dt" : "default: 0.25 / max|grad R|, at most S_ideal / max R",
+				st.seg);
+			fprintf(stderr, "%s: max|grad R| %g /s, max R %g um/s; %ld ray substeps, "
+				"%ld recursive halvings\n", util_prog(), f.gmax, f.rmax,
+				st.substeps, st.halvings);
+			fprintf(stderr, "%s: final mesh %zu nodes, %zu segments, %zu triangles "
+				"(largest %ld nodes, %ld triangles)\n", util_prog(),
+				m->live_node, m->live_seg, m->live_tri, st.max_nodes, st.max_tris);
+			fprintf(stderr, "%s: %ld cuts, %ld merges (%ld refused), %ld clips removing "
+				"%ld triangles, %ld nodes stopped at the substrate%s\n",
+				util_prog(), st.cuts, st.merges, st.refused, st.clips,
+				st.clipped_tris, st.stopped,
+				o.deloop ? "; -deloop: not implemented, loops left in place" : "");
+		}
+		mesh_free(m);
+	}
+	fmt_rate_free(r);
+	free(n2);
+	free(nc);
+	return 0;
+}

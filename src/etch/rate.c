@@ -1,0 +1,100 @@
+/*
+ * rate.c - trilinear interpolation of the rate array and its gradient.
+ *
+ * The gradient is that of the trilinear interpolant inside the cell
+ * holding the point, so R and grad R are consistent (the ray equation
+ * [6.6] integrates exactly what R describes).  It is discontinuous across
+ * cell faces, as the interpolant's derivative is; a point on a face takes
+ * the cell above it (clamped at the last cell).
+ */
+#include "rate.h"
+
+#include "util.h"
+
+#include <math.h>
+
+void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
+{
+	int n[3] = {r->nx, r->ny, r->nz};
+	double lo[3] = {r->xmin, r->ymin, r->zmin}, hi[3] = {r->xmax, r->ymax, r->zmax};
+	for (int d = 0; d < 3; d++) {
+		if (n[d] < 2)
+			die("%s:1: etch needs at least 2 grid points along %c, got %d",
+			    name, "xyz"[d], n[d]);
+		if (!(hi[d] > lo[d]))
+			die("%s:1: empty %c range", name, "xyz"[d]);
+		f->n[d] = n[d];
+		f->lo[d] = lo[d];
+		f->hi[d] = hi[d];
+		f->h[d] = (hi[d] - lo[d]) / (n[d] - 1);
+	}
+	f->v = fmt_rate_values(r);
+	size_t total = (size_t)n[0] * n[1] * n[2];
+	f->rmax = 0;
+	for (size_t i = 0; i < total; i++) {
+		if (!(f->v[i] >= 0))
+			die("%s:1: negative or invalid rate at point %zu", name, i);
+		if (f->v[i] > f->rmax)
+			f->rmax = f->v[i];
+	}
+	/* |grad R| of a trilinear cell is largest at one of its corners
+	 * (|grad R|^2 is convex along each axis), where each component is
+	 * the difference along one cell edge: so this is max |grad R|
+	 * exactly, as thesis 7.4.1 wants it. */
+	double gmax2 = 0;
+	size_t sx = 1, sy = (size_t)n[0], sz = (size_t)n[0] * n[1];
+	for (int k = 0; k + 1 < n[2]; k++)
+		for (int j = 0; j + 1 < n[1]; j++)
+			for (int i = 0; i + 1 < n[0]; i++) {
+				const double *v = f->v + k * sz + j * sy + i;
+				for (int c = 0; c < 8; c++) {
+					size_t ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
+					double gx = (v[sx + oy * sy + oz * sz] - v[oy * sy + oz * sz]) / f->h[0];
+					double gy = (v[ox + sy + oz * sz] - v[ox + oz * sz]) / f->h[1];
+					double gz = (v[ox + oy * sy + sz] - v[ox + oy * sy]) / f->h[2];
+					double g2 = gx * gx + gy * gy + gz * gz;
+					if (g2 > gmax2)
+						gmax2 = g2;
+				}
+			}
+	f->gmax = sqrt(gmax2);
+}
+
+double rfield_eval(const struct rfield *f, const double p[3], double g[3])
+{
+	int c[3];
+	double t[3];
+	for (int d = 0; d < 3; d++) {
+		double u = (p[d] - f->lo[d]) / f->h[d];
+		if (!(u > 0))           /* also catches NaN */
+			u = 0;
+		double top = f->n[d] - 1;
+		if (u > top)
+			u = top;
+		int i = (int)u;
+		if (i > f->n[d] - 2)
+			i = f->n[d] - 2;
+		c[d] = i;
+		t[d] = u - i;
+	}
+	size_t sx = 1, sy = (size_t)f->n[0], sz = (size_t)f->n[0] * f->n[1];
+	const double *v = f->v + c[2] * sz + c[1] * sy + c[0];
+	double v000 = v[0], v100 = v[sx], v010 = v[sy], v110 = v[sx + sy];
+	double v001 = v[sz], v101 = v[sx + sz], v011 = v[sy + sz], v111 = v[sx + sy + sz];
+	double tx = t[0], ty = t[1], tz = t[2];
+	/* interpolate along x, then y, then z, keeping the partial sums
+	 * needed for the derivatives */
+	double a00 = v000 + tx * (v100 - v000), a10 = v010 + tx * (v110 - v010);
+	double a01 = v001 + tx * (v101 - v001), a11 = v011 + tx * (v111 - v011);
+	double b0 = a00 + ty * (a10 - a00), b1 = a01 + ty * (a11 - a01);
+	double r = b0 + tz * (b1 - b0);
+	if (g) {
+		double dx00 = v100 - v000, dx10 = v110 - v010, dx01 = v101 - v001, dx11 = v111 - v011;
+		double dx0 = dx00 + ty * (dx10 - dx00), dx1 = dx01 + ty * (dx11 - dx01);
+		g[0] = (dx0 + tz * (dx1 - dx0)) / f->h[0];
+		double dy0 = a10 - a00, dy1 = a11 - a01;
+		g[1] = (dy0 + tz * (dy1 - dy0)) / f->h[1];
+		g[2] = (b1 - b0) / f->h[2];
+	}
+	return r;
+}

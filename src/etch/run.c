@@ -1,0 +1,108 @@
+/*
+ * run.c - the time loop of the ray-string algorithm (thesis 8.3): from the
+ * initial surface, repeat [I] advance every node along its ray, [II] cut
+ * and merge segments, [III] clip every n steps, [IV] deloop if asked,
+ * until the etch time; write a set of plot curves at every print time.
+ *
+ * Steps are equal within each print interval and end exactly on the
+ * print times.  The default step follows thesis 7.4.1: |grad R| dt < 1
+ * keeps the rays from reflecting ([7.4]); ETCH_DT_GRAD of that bound is
+ * used, and no node may move more than an ideal segment length in a step,
+ * so that mesh modification keeps pace with the front.
+ */
+#include "etch.h"
+
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+double etch_default_seg(const struct rfield *f)
+{
+	double w = f->hi[0] - f->lo[0];
+	if (f->hi[1] - f->lo[1] > w)
+		w = f->hi[1] - f->lo[1];
+	return w / ETCH_SEG_DIVISIONS;
+}
+
+double etch_default_dt(const struct rfield *f, double seg, double et)
+{
+	double dt = et;
+	if (f->gmax > 0 && ETCH_DT_GRAD / f->gmax < dt)
+		dt = ETCH_DT_GRAD / f->gmax;
+	if (f->rmax > 0 && seg / f->rmax < dt)
+		dt = seg / f->rmax;
+	return dt;
+}
+
+static void check(const struct mesh *m, long step)
+{
+	const char *err = mesh_check(m);
+	if (err)
+		die("internal error: mesh inconsistent after step %ld: %s", step, err);
+}
+
+static void note_size(const struct mesh *m, struct etch_stats *st)
+{
+	if ((long)m->live_node > st->max_nodes)
+		st->max_nodes = (long)m->live_node;
+	if ((long)m->live_tri > st->max_tris)
+		st->max_tris = (long)m->live_tri;
+}
+
+struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
+		      struct etch_stats *st)
+{
+	double seg = o->seg > 0 ? o->seg : etch_default_seg(f);
+	st->seg = seg;
+	st->dt_grad = f->gmax > 0 ? 1 / f->gmax : 0;
+	st->dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
+	struct mesh *m = mesh_new();
+	if (o->seed)
+		start_seed(m, o->seedp);
+	else
+		start_flat(m, f, seg);
+	if (o->check)
+		check(m, 0);
+	note_size(m, st);
+	struct etch_out *out = out_open(o, f);
+	double t = 0;
+	long since_clip = 0;
+	for (long k = 1;; k++) {
+		/* print times pt, 2 pt, ... and the etch time, hit exactly */
+		double tp = o->pt > 0 ? k * o->pt : o->et;
+		if (tp > o->et * (1 - 1e-12))
+			tp = o->et;
+		double span = tp - t;
+		long n = (long)ceil(span / st->dt * (1 - 1e-12));
+		if (n < 1)
+			n = 1;
+		for (long i = 1; i <= n; i++) {
+			/* each step of span / n, the last ending on tp exactly */
+			double h = i < n ? span / n : tp - (t + (n - 1) * (span / n));
+			advance_mesh(m, f, h, o, st);
+			modify_mesh(m, f, seg, o, st);
+			if (++since_clip >= o->clip_every || i == n) {
+				clip_mesh(m, f, st);
+				since_clip = 0;
+			}
+			if (o->deloop)
+				deloop_mesh(m);
+			mesh_compact(m);
+			st->steps++;
+			note_size(m, st);
+			if (o->check)
+				check(m, st->steps);
+		}
+		t = tp;
+		out_write(out, m);
+		if (!o->quiet)
+			fprintf(stderr, "%s: t = %g s: %zu nodes, %zu triangles\n",
+				util_prog(), t, m->live_node, m->live_tri);
+		if (tp >= o->et)
+			break;
+	}
+	out_close(out);
+	return m;
+}
