@@ -1,0 +1,756 @@
+/*
+ * pdraw - 3D line and polygon plots in parallel projection (thesis
+ * Appendix B, pdraw(L)).
+ *
+ * The view vector v (the eye position relative to the origin) defines a
+ * screen basis: w = v/|v| points to the eye, the screen's "up" is the z
+ * axis projected on the screen plane (the y axis when looking along z),
+ * and right = up x w.  Every set of every file is one page.
+ *
+ * Hidden lines (-h): the closed curves are polygons, filled white and
+ * outlined, drawn back to front.  A plain depth sort fails for polygons
+ * that overlap in depth, so the order comes from a BSP partition (Fuchs,
+ * Kedem and Naylor 1980): a polygon's plane splits the others into the
+ * pieces behind it and in front of it, recursively, and the pieces are
+ * painted far side first.  Split pieces are filled without an outline and
+ * only the parts of the original edges are stroked, so no split seam
+ * shows.  Open curves take part as segments that are split but never
+ * split others.  The partition runs on an explicit stack, so a deep
+ * partition cannot overflow the C stack.
+ */
+#include "args.h"
+#include "draw.h"
+#include "fmt_options.h"
+#include "fmt_plot.h"
+#include "num.h"
+#include "plot_common.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage_head[] =
+	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e] [-h]\n"
+	"             [-nosort] [-noplot] [-print] [-ps] [-tl toplabel] [-xl xlabel]\n"
+	"             [-yl ylabel] [-zl zlabel] [-svg file] [X options] plotfile...\n"
+	"  -v vx vy vz      eye position (view vector), default -1 -2 1.5\n"
+	"  -e               unequal axis scales (the bounding box becomes a cube)\n"
+	"  -h               hidden-line drawing of the polygons (closed curves)\n"
+	"  -nosort          with -h: paint the polygons in file order\n"
+	"  -zl zlabel       z label\n"
+	"  --help           this text (-h is hidden lines, as in the guide)\n"
+	"  keys in the X11 window: h/l turn sideways, j/k up/down, a/d/s/f turn by\n"
+	"  90 degrees, z/y/x project on the x-y, x-z, y-z planes, o original view,\n"
+	"  q quit (the final view is written to the PostScript file)\n";
+
+static const struct opt_spec spec[] = {
+	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("zlabel"),
+	PLOT_OPT_STR("toplabel"), PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("postscript"),
+	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_STR("printer"),
+	PLOT_OPT_ONOFF("line"), PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"),
+	PLOT_OPT_ONOFF("markerchange"), PLOT_OPT_ONOFF("hiddenline"), PLOT_OPT_ONOFF("nosort"),
+	PLOT_OPT_SCALE, PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
+	PLOT_OPT_TICKS("zticks"),
+	{NULL, 0, 0, 0, NULL}
+};
+
+/* The default eye position: above the x-y plane, in front and to the
+ * left, the angle of the thesis' profile figures. */
+static const double DEFAULT_VIEW[3] = {-1, -2, 1.5};
+/* Key rotations (degrees). */
+#define STEP_ANGLE 15.0
+/* Page area of the drawing (points): below the top label, above the foot. */
+#define AREA_X0 70.0
+#define AREA_X1 542.0
+#define AREA_Y0 130.0
+#define AREA_Y1 700.0
+#define TICK_FRAC 0.03      /* tick length, fraction of the largest box side */
+#define FONT_TICK 9.0
+#define FONT_LABEL 12.0
+#define FONT_TOP 16.0
+#define MARKER_SIZE 5.0
+/* Plane-side tolerance, relative to the scene size (unit box): points this
+ * close to a plane are on it. */
+#define PLANE_EPS 1e-9
+
+struct options {
+	struct plot_cmd cmd;
+	double v[3];
+	int has_v, unequal, hidden, nosort;
+	int nfiles;
+	char **files;
+};
+
+struct ctx {
+	struct plot_settings s;
+	double v[3], v0[3];
+	int hidden, nosort, unequal;
+	int nsets;
+	const struct plot_set **sets;
+};
+
+static void print_usage(FILE *f)
+{
+	fputs(usage_head, f);
+	fputs(plot_usage_common, f);
+	fputs(plot_usage_x, f);
+}
+
+static void parse_options(int argc, char **argv, struct options *o)
+{
+	struct args a;
+	args_init(&a, argc, argv);
+	memset(o, 0, sizeof *o);
+	plot_cmd_init(&o->cmd);
+	o->files = xcalloc((size_t)argc, sizeof *o->files);
+	while (a.i < argc) {
+		const char *s = argv[a.i];
+		if (args_flag(&a, "--help")) {
+			print_usage(stdout);
+			fshut(stdout, "stdout");
+			free(o->files);
+			exit(0);
+		}
+		if (args_flag(&a, "-v")) {
+			for (int k = 0; k < 3; k++) {
+				if (a.i >= argc || !num_parse(argv[a.i], &o->v[k])) {
+					args_error(&a, "option -v needs three numbers vx vy vz");
+					break;
+				}
+				a.i++;
+			}
+			o->has_v = 1;
+			if (o->v[0] == 0 && o->v[1] == 0 && o->v[2] == 0)
+				args_error(&a, "option -v: the view vector must not be zero");
+		}
+		else if (args_flag(&a, "-e")) o->unequal = 1;
+		else if (args_flag(&a, "-h")) o->hidden = 1;
+		else if (args_flag(&a, "-nosort")) o->nosort = 1;
+		else if (plot_cmd_arg(&a, &o->cmd, PC_ZLABEL | PC_XDISPLAY)) ;
+		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
+		else o->files[o->nfiles++] = argv[a.i++];
+	}
+	if (o->nfiles == 0)
+		args_error(&a, "no plotfile");
+	if (a.bad) {
+		free(o->files);
+		print_usage(stderr);
+	}
+	args_done(&a, "");
+}
+
+/* ---- view ---- */
+
+struct view {
+	double e1[3], e2[3], w[3];  /* screen right, up, towards the eye */
+	double c[3], sc[3];         /* data -> unit box: (p - c) * sc */
+	double a, bx, by;           /* view plane -> page: a*X + bx, a*Y + by */
+};
+
+static void cross3(const double *a, const double *b, double *o)
+{
+	o[0] = a[1] * b[2] - a[2] * b[1];
+	o[1] = a[2] * b[0] - a[0] * b[2];
+	o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double *a, const double *b)
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static int normalize3(double *a)
+{
+	double n = sqrt(dot3(a, a));
+	if (!(n > 0))
+		return 0;
+	a[0] /= n, a[1] /= n, a[2] /= n;
+	return 1;
+}
+
+/* Screen basis of a view vector: up is z projected on the screen, or y
+ * when looking along z. */
+static void basis(const double *v, double *e1, double *e2, double *w)
+{
+	memcpy(w, v, 3 * sizeof *w);
+	normalize3(w);
+	double z[3] = {0, 0, 1};
+	double t = dot3(z, w);
+	for (int k = 0; k < 3; k++)
+		e2[k] = z[k] - t * w[k];
+	if (sqrt(dot3(e2, e2)) < 1e-9) {
+		double y[3] = {0, 1, 0};
+		t = dot3(y, w);
+		for (int k = 0; k < 3; k++)
+			e2[k] = y[k] - t * w[k];
+	}
+	normalize3(e2);
+	cross3(e2, w, e1);
+}
+
+/* Data point -> view coordinates X (right), Y (up), D (towards the eye). */
+static void to_view(const struct view *vw, const double *p, double *o)
+{
+	double q[3];
+	for (int k = 0; k < 3; k++)
+		q[k] = (p[k] - vw->c[k]) * vw->sc[k];
+	o[0] = dot3(q, vw->e1);
+	o[1] = dot3(q, vw->e2);
+	o[2] = dot3(q, vw->w);
+}
+
+static void to_page(const struct view *vw, const double *p, double *px, double *py)
+{
+	double o[3];
+	to_view(vw, p, o);
+	*px = vw->a * o[0] + vw->bx;
+	*py = vw->a * o[1] + vw->by;
+}
+
+/* The box of a set: its bounds, or the data's extent where a bound pair
+ * is empty. */
+static void set_box(const struct plot_set *st, double *b)
+{
+	memcpy(b, st->bounds, 6 * sizeof *b);
+	for (int k = 0; k < 3; k++) {
+		if (b[2 * k + 1] > b[2 * k])
+			continue;
+		double lo = INFINITY, hi = -INFINITY;
+		for (int c = 0; c < st->ncurves; c++)
+			for (int i = 0; i < st->curves[c].npts; i++) {
+				double v = st->curves[c].p[3 * i + k];
+				lo = fmin(lo, v), hi = fmax(hi, v);
+			}
+		if (!(hi > lo)) {
+			double m = isfinite(lo) ? lo : 0;
+			lo = m - 0.5, hi = m + 0.5;
+		}
+		b[2 * k] = lo, b[2 * k + 1] = hi;
+	}
+}
+
+static void make_view(struct view *vw, const struct ctx *c, const double *box)
+{
+	basis(c->v, vw->e1, vw->e2, vw->w);
+	double big = 0;
+	for (int k = 0; k < 3; k++)
+		big = fmax(big, box[2 * k + 1] - box[2 * k]);
+	for (int k = 0; k < 3; k++) {
+		vw->c[k] = (box[2 * k] + box[2 * k + 1]) / 2;
+		/* -e: each side scaled to 1 (a cube); else one scale for all */
+		vw->sc[k] = 1 / (c->unequal ? box[2 * k + 1] - box[2 * k] : big);
+	}
+	double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+	for (int i = 0; i < 8; i++) {
+		double p[3] = {box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + ((i >> 2) & 1)]}, o[3];
+		to_view(vw, p, o);
+		for (int k = 0; k < 2; k++)
+			lo[k] = fmin(lo[k], o[k]), hi[k] = fmax(hi[k], o[k]);
+	}
+	/* a margin for the tick labels */
+	double m = 0.12 * fmax(hi[0] - lo[0], hi[1] - lo[1]);
+	lo[0] -= m, lo[1] -= m, hi[0] += m, hi[1] += m;
+	double ax = (AREA_X1 - AREA_X0) / (hi[0] - lo[0]);
+	double ay = (AREA_Y1 - AREA_Y0) / (hi[1] - lo[1]);
+	vw->a = fmin(ax, ay);
+	vw->bx = (AREA_X0 + AREA_X1) / 2 - vw->a * (lo[0] + hi[0]) / 2;
+	vw->by = (AREA_Y0 + AREA_Y1) / 2 - vw->a * (lo[1] + hi[1]) / 2;
+}
+
+/* ---- axes ---- */
+
+/* One axis along the box edge from p0 (at the axis' low end) in direction
+ * k, ticks pointing along out (unit box units). */
+static void axis3(struct draw *d, const struct view *vw, const double *box, int k,
+		  const double *p0, const double *out, int ndiv, const char *label,
+		  double angle)
+{
+	struct plot_axis ax;
+	plot_axis_linear(&ax, box[2 * k], box[2 * k + 1], ndiv, 0);
+	double a[3], b[3], x0, y0, x1, y1;
+	memcpy(a, p0, sizeof a);
+	memcpy(b, p0, sizeof b);
+	a[k] = box[2 * k], b[k] = box[2 * k + 1];
+	to_page(vw, a, &x0, &y0);
+	to_page(vw, b, &x1, &y1);
+	draw_set_line(d, 1, 0.8);
+	draw_segment(d, x0, y0, x1, y1);
+	double t[3], tl[3];
+	for (int i = 0; i < ax.nticks; i++) {
+		double p[3];
+		memcpy(p, p0, sizeof p);
+		p[k] = ax.tick[i];
+		for (int j = 0; j < 3; j++) {
+			t[j] = p[j] + out[j] * TICK_FRAC / vw->sc[j];
+			tl[j] = p[j] + out[j] * 3 * TICK_FRAC / vw->sc[j];
+		}
+		double px, py, qx, qy, lx, ly;
+		to_page(vw, p, &px, &py);
+		to_page(vw, t, &qx, &qy);
+		to_page(vw, tl, &lx, &ly);
+		draw_segment(d, px, py, qx, qy);
+		draw_text(d, lx, ly, FONT_TICK, 0, DRAW_CENTER, DRAW_MIDDLE, ax.label[i]);
+	}
+	if (label && *label) {
+		double m[3];
+		for (int j = 0; j < 3; j++)
+			m[j] = (a[j] + b[j]) / 2 + out[j] * 7 * TICK_FRAC / vw->sc[j];
+		double lx, ly;
+		to_page(vw, m, &lx, &ly);
+		draw_text(d, lx, ly, FONT_LABEL, angle, DRAW_CENTER, DRAW_MIDDLE, label);
+	}
+}
+
+/* x along the front bottom edge, y along the right bottom edge, z up the
+ * front left edge, as seen from the current view. */
+static void axes(struct draw *d, const struct view *vw, const double *box, const struct ctx *c)
+{
+	int yf = vw->w[1] > 0;                  /* front face: y = ymax? */
+	int xr = vw->e1[0] >= 0;                /* right side: x = xmax? */
+	double yfront = box[2 + yf], xright = box[xr], xleft = box[!xr];
+	double sy = yf ? 1 : -1, sx = xr ? 1 : -1;
+	double px[3] = {0, yfront, box[4]}, ox[3] = {0, sy, 0};
+	double py[3] = {xright, 0, box[4]}, oy[3] = {sx, 0, 0};
+	double pz[3] = {xleft, yfront, 0}, oz[3] = {-vw->e1[0], -vw->e1[1], 0};
+	/* z ticks point to the screen's left, in the x-y plane */
+	if (!normalize3(oz))
+		oz[0] = -sx;
+	axis3(d, vw, box, 0, px, ox, c->s.xticks, c->s.xlabel, 0);
+	axis3(d, vw, box, 1, py, oy, c->s.yticks, c->s.ylabel, 0);
+	axis3(d, vw, box, 2, pz, oz, c->s.zticks, c->s.zlabel, 90);
+}
+
+/* ---- hidden lines: BSP painter ---- */
+
+struct frag {
+	int n;              /* vertices (2 for a segment) */
+	int curve;          /* the curve it comes from (its line style) */
+	int seg;            /* an open-curve segment: never a splitter */
+	int hasplane;
+	double pl[4];       /* plane n.p + d = 0, |n| = 1 (view coordinates) */
+	double *p;          /* 3n view coordinates */
+	unsigned char *orig;/* edge i (i -> i+1) is part of an original edge */
+};
+
+static struct frag *frag_new(int n, int curve, int seg)
+{
+	struct frag *f = xcalloc(1, sizeof *f);
+	f->n = n;
+	f->curve = curve;
+	f->seg = seg;
+	f->p = xreallocarray(NULL, (size_t)n, 3 * sizeof *f->p);
+	f->orig = xcalloc((size_t)n, 1);
+	return f;
+}
+
+static void frag_free(struct frag *f)
+{
+	if (f) {
+		free(f->p);
+		free(f->orig);
+		free(f);
+	}
+}
+
+/* Newell's normal: robust for any planar polygon. */
+static void frag_plane(struct frag *f)
+{
+	double n[3] = {0, 0, 0}, c[3] = {0, 0, 0};
+	for (int i = 0; i < f->n; i++) {
+		const double *a = f->p + 3 * i, *b = f->p + 3 * ((i + 1) % f->n);
+		n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+		n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+		n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+		for (int k = 0; k < 3; k++)
+			c[k] += a[k] / f->n;
+	}
+	double len = sqrt(dot3(n, n));
+	f->hasplane = !f->seg && len > 1e-12;
+	if (f->hasplane) {
+		for (int k = 0; k < 3; k++)
+			f->pl[k] = n[k] / len;
+		f->pl[3] = -dot3(f->pl, c);
+	}
+}
+
+static int side(const double *pl, const double *p)
+{
+	double s = dot3(pl, p) + pl[3];
+	return s > PLANE_EPS ? 1 : s < -PLANE_EPS ? -1 : 0;
+}
+
+/* The part of f on side sg (+1 or -1) of pl, or NULL if it is empty. */
+static struct frag *clip_part(const struct frag *f, const double *pl, const int *sd, int sg)
+{
+	int cap = f->n * 2 + 2, m = 0;
+	struct frag *o = frag_new(cap, f->curve, f->seg);
+	int nedge = f->seg ? 1 : f->n;
+	for (int i = 0; i < nedge; i++) {
+		int j = (i + 1) % f->n;
+		const double *a = f->p + 3 * i, *b = f->p + 3 * j;
+		int ina = sg * sd[i] >= 0, inb = sg * sd[j] >= 0;
+		int opposite = sd[i] * sd[j] < 0;
+		if (ina) {
+			memcpy(o->p + 3 * m, a, 3 * sizeof *a);
+			o->orig[m++] = (inb || opposite) ? f->orig[i] : 0;
+		}
+		if (opposite) {
+			double sa = dot3(pl, a) + pl[3], sb = dot3(pl, b) + pl[3];
+			double t = sa / (sa - sb);
+			for (int k = 0; k < 3; k++)
+				o->p[3 * m + k] = a[k] + t * (b[k] - a[k]);
+			o->orig[m++] = inb ? f->orig[i] : 0;
+		}
+	}
+	if (f->seg && sg * sd[1] >= 0) {    /* a segment's far end */
+		memcpy(o->p + 3 * m, f->p + 3, 3 * sizeof *f->p);
+		o->orig[m++] = 0;
+	}
+	o->n = m;
+	if (m < (f->seg ? 2 : 3)) {
+		frag_free(o);
+		return NULL;
+	}
+	o->hasplane = f->hasplane;
+	memcpy(o->pl, f->pl, sizeof o->pl);
+	return o;
+}
+
+struct list { struct frag **f; size_t n, cap; };
+
+static void list_add(struct list *l, struct frag *f)
+{
+	xgrow(&l->f, &l->cap, l->n + 1, sizeof *l->f);
+	l->f[l->n++] = f;
+}
+
+/* Work of the painter: a list to partition, or fragments to paint. */
+struct work { int paint; struct list l; };
+
+static int count_splits(const struct frag *s, struct frag *const *f, size_t n)
+{
+	int splits = 0;
+	size_t step = n > 64 ? n / 64 : 1;
+	for (size_t i = 0; i < n; i += step) {
+		int pos = 0, neg = 0;
+		for (int k = 0; k < f[i]->n; k++) {
+			int v = side(s->pl, f[i]->p + 3 * k);
+			pos |= v > 0, neg |= v < 0;
+		}
+		splits += pos && neg;
+	}
+	return splits;
+}
+
+/* The splitter: of a few candidates spread over the list, the one that
+ * splits the fewest of a sample (fewer pieces, same picture). */
+static long choose(struct frag *const *f, size_t n)
+{
+	long best = -1;
+	int bests = 0;
+	for (int c = 0; c < 5; c++) {
+		size_t i = n * (size_t)c / 5;
+		while (i < n && !f[i]->hasplane)
+			i++;
+		if (i >= n)
+			continue;
+		int s = count_splits(f[i], f, n);
+		if (best < 0 || s < bests)
+			best = (long)i, bests = s;
+	}
+	return best;
+}
+
+typedef void (*paint_fn)(struct draw *d, const struct view *vw, const struct ctx *c,
+			 const struct frag *f);
+
+static void painter(struct draw *d, const struct view *vw, const struct ctx *c,
+		    struct list all, paint_fn paint)
+{
+	struct work *stack = NULL;
+	size_t ns = 0, cap = 0;
+	xgrow(&stack, &cap, 1, sizeof *stack);
+	stack[ns++] = (struct work){0, all};
+	while (ns > 0) {
+		struct work w = stack[--ns];
+		long si = w.paint ? -1 : choose(w.l.f, w.l.n);
+		if (si < 0) {
+			/* nothing left to split by: paint (segments only, or the
+			 * polygons of one plane in file order) */
+			for (size_t i = 0; i < w.l.n; i++) {
+				paint(d, vw, c, w.l.f[i]);
+				frag_free(w.l.f[i]);
+			}
+			free(w.l.f);
+			continue;
+		}
+		const struct frag *s = w.l.f[si];
+		struct list pos = {0}, neg = {0}, co = {0};
+		int *sd = NULL;
+		size_t sdcap = 0;
+		for (size_t i = 0; i < w.l.n; i++) {
+			struct frag *f = w.l.f[i];
+			if ((long)i == si) {
+				list_add(&co, f);
+				continue;
+			}
+			xgrow(&sd, &sdcap, (size_t)f->n, sizeof *sd);
+			int p = 0, q = 0;
+			for (int k = 0; k < f->n; k++) {
+				sd[k] = side(s->pl, f->p + 3 * k);
+				p |= sd[k] > 0, q |= sd[k] < 0;
+			}
+			if (!p && !q)
+				list_add(&co, f);
+			else if (!q)
+				list_add(&pos, f);
+			else if (!p)
+				list_add(&neg, f);
+			else {
+				struct frag *a = clip_part(f, s->pl, sd, 1);
+				struct frag *b = clip_part(f, s->pl, sd, -1);
+				if (a) list_add(&pos, a);
+				if (b) list_add(&neg, b);
+				frag_free(f);
+			}
+		}
+		free(sd);
+		free(w.l.f);
+		/* the eye is on the + side when the normal points to it (D up) */
+		int eye_pos = s->pl[2] >= 0;
+		struct list nearl = eye_pos ? pos : neg, farl = eye_pos ? neg : pos;
+		xgrow(&stack, &cap, ns + 3, sizeof *stack);
+		stack[ns++] = (struct work){0, nearl};
+		stack[ns++] = (struct work){1, co};
+		stack[ns++] = (struct work){0, farl};
+	}
+	free(stack);
+}
+
+/* ---- drawing ---- */
+
+static int curve_linetype(const struct ctx *c, int i)
+{
+	if (!c->s.line)
+		return 0;
+	return c->s.linechange ? 1 + i % (DRAW_NLINETYPES - 1) : 1;
+}
+
+static int curve_marker(const struct ctx *c, int i)
+{
+	if (c->s.markerchange)
+		return 1 + i % (DRAW_NMARKERS - 1);
+	return c->s.marker ? 2 : 0;
+}
+
+/* Closed curve with at least 3 distinct corners: a polygon. */
+static int is_polygon(const struct plot_curve *cv)
+{
+	return cv->npts >= 4 && memcmp(cv->p, cv->p + 3 * (cv->npts - 1), 3 * sizeof *cv->p) == 0;
+}
+
+static void paint_frag(struct draw *d, const struct view *vw, const struct ctx *c,
+		       const struct frag *f)
+{
+	double *xy = xreallocarray(NULL, (size_t)f->n + 1, 2 * sizeof *xy);
+	for (int i = 0; i < f->n; i++) {
+		xy[2 * i] = vw->a * f->p[3 * i] + vw->bx;
+		xy[2 * i + 1] = vw->a * f->p[3 * i + 1] + vw->by;
+	}
+	draw_set_line(d, curve_linetype(c, f->curve), 0.6);
+	if (f->seg) {
+		if (f->orig[0])
+			draw_polyline(d, 2, xy);
+		free(xy);
+		return;
+	}
+	draw_polygon(d, f->n, xy, 1.0, 0);
+	/* stroke the runs of original edges */
+	int start = 0;
+	while (start < f->n && f->orig[start])
+		start++;
+	if (start == f->n) {
+		draw_polygon(d, f->n, xy, DRAW_NOFILL, 1);
+		free(xy);
+		return;
+	}
+	double *run = xreallocarray(NULL, (size_t)f->n + 1, 2 * sizeof *run);
+	int m = 0;
+	for (int k = 1; k <= f->n; k++) {
+		int i = (start + k) % f->n;     /* edge i starts at vertex i */
+		if (f->orig[i]) {
+			if (m == 0)
+				run[0] = xy[2 * i], run[1] = xy[2 * i + 1], m = 1;
+			int j = (i + 1) % f->n;
+			run[2 * m] = xy[2 * j], run[2 * m + 1] = xy[2 * j + 1];
+			m++;
+		} else if (m) {
+			draw_polyline(d, m, run);
+			m = 0;
+		}
+	}
+	if (m)
+		draw_polyline(d, m, run);
+	free(run);
+	free(xy);
+}
+
+static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx *c,
+			const struct plot_set *st)
+{
+	struct list all = {0};
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		if (is_polygon(cv)) {
+			struct frag *f = frag_new(cv->npts - 1, i, 0);
+			for (int k = 0; k + 1 < cv->npts; k++) {
+				to_view(vw, cv->p + 3 * k, f->p + 3 * k);
+				f->orig[k] = 1;
+			}
+			frag_plane(f);
+			list_add(&all, f);
+		} else {
+			for (int k = 0; k + 1 < cv->npts; k++) {
+				struct frag *f = frag_new(2, i, 1);
+				to_view(vw, cv->p + 3 * k, f->p);
+				to_view(vw, cv->p + 3 * k + 3, f->p + 3);
+				f->orig[0] = 1;
+				list_add(&all, f);
+			}
+		}
+	}
+	painter(d, vw, c, all, paint_frag);
+}
+
+static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set *st)
+{
+	double box[6];
+	set_box(st, box);
+	struct view vw;
+	make_view(&vw, c, box);
+	if (c->s.toplabel && *c->s.toplabel)
+		draw_text(d, d->w / 2, AREA_Y1 + 40, FONT_TOP, 0, DRAW_CENTER, DRAW_BOTTOM,
+			  c->s.toplabel);
+	axes(d, &vw, box, c);
+	if (c->hidden && !c->nosort) {
+		draw_hidden(d, &vw, c, st);
+	} else {
+		for (int i = 0; i < st->ncurves; i++) {
+			const struct plot_curve *cv = &st->curves[i];
+			double *xy = xreallocarray(NULL, (size_t)cv->npts + 1, 2 * sizeof *xy);
+			for (int k = 0; k < cv->npts; k++)
+				to_page(&vw, cv->p + 3 * k, &xy[2 * k], &xy[2 * k + 1]);
+			draw_set_line(d, curve_linetype(c, i), 0.6);
+			if (c->hidden && is_polygon(cv))        /* -nosort: file order */
+				draw_polygon(d, cv->npts - 1, xy, 1.0, curve_linetype(c, i) != 0);
+			else
+				draw_polyline(d, cv->npts, xy);
+			free(xy);
+		}
+	}
+	for (int i = 0; i < st->ncurves; i++) {
+		int mk = curve_marker(c, i);
+		if (!mk)
+			continue;
+		const struct plot_curve *cv = &st->curves[i];
+		for (int k = 0; k < cv->npts; k++) {
+			double x, y;
+			to_page(&vw, cv->p + 3 * k, &x, &y);
+			draw_marker(d, mk, x, y, MARKER_SIZE);
+		}
+	}
+}
+
+static struct draw *render(void *vc)
+{
+	const struct ctx *c = vc;
+	struct draw *d = plot_new_page(0);
+	for (int i = 0; i < c->nsets; i++) {
+		if (i)
+			draw_page(d);
+		draw_set(d, c, c->sets[i]);
+	}
+	return d;
+}
+
+/* ---- keys (the guide's H J K L O A S D F Z Y X) ---- */
+
+/* Rotates v by angle (degrees) about the unit axis u (Rodrigues). */
+static void rotate(double *v, const double *u, double angle)
+{
+	double t = angle * M_PI / 180, cs = cos(t), sn = sin(t), k = dot3(u, v), x[3];
+	cross3(u, v, x);
+	for (int i = 0; i < 3; i++)
+		v[i] = v[i] * cs + x[i] * sn + u[i] * k * (1 - cs);
+}
+
+static int key(void *vc, int ch)
+{
+	struct ctx *c = vc;
+	double e1[3], e2[3], w[3], z[3] = {0, 0, 1};
+	basis(c->v, e1, e2, w);
+	switch (ch) {
+	case 'h': case 'H': rotate(c->v, z, -STEP_ANGLE); break;
+	case 'l': case 'L': rotate(c->v, z, STEP_ANGLE); break;
+	case 'j': case 'J': rotate(c->v, e1, -STEP_ANGLE); break;
+	case 'k': case 'K': rotate(c->v, e1, STEP_ANGLE); break;
+	case 'a': case 'A': rotate(c->v, z, -90); break;
+	case 'd': case 'D': rotate(c->v, z, 90); break;
+	case 's': case 'S': rotate(c->v, e1, 90); break;
+	case 'f': case 'F': rotate(c->v, e1, -90); break;
+	case 'o': case 'O': memcpy(c->v, c->v0, sizeof c->v); break;
+	case 'z': case 'Z': c->v[0] = 0, c->v[1] = 0, c->v[2] = 1; break;
+	case 'y': case 'Y': c->v[0] = 0, c->v[1] = -1, c->v[2] = 0; break;
+	case 'x': case 'X': c->v[0] = 1, c->v[1] = 0, c->v[2] = 0; break;
+	default: return 0;
+	}
+	/* clean rounding noise so the written view is reproducible */
+	for (int i = 0; i < 3; i++)
+		if (fabs(c->v[i]) < 1e-12)
+			c->v[i] = 0;
+	return 1;
+}
+
+int main(int argc, char **argv)
+{
+	struct options o;
+	parse_options(argc, argv, &o);
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	memset(val, 0, sizeof val);
+	if (o.cmd.optfile)
+		fmt_options_read(o.cmd.optfile, spec, val);
+	struct ctx c;
+	memset(&c, 0, sizeof c);
+	c.s = (struct plot_settings){
+		.toplabel = "3D Line Plot", .xlabel = "X-Axis", .ylabel = "Y-Axis",
+		.zlabel = "Z-Axis", .equalscale = 1, .postscript = 1, .line = 1,
+		.scale = 1.0, .xticks = 2, .yticks = 2, .zticks = 2,
+	};
+	plot_settings_resolve(&c.s, spec, val, &o.cmd);
+	const struct opt_value *v;
+	c.hidden = o.hidden || ((v = plot_opt(spec, val, "hiddenline")) && v->num);
+	c.nosort = o.nosort || ((v = plot_opt(spec, val, "nosort")) && v->num);
+	c.unequal = o.unequal || !c.s.equalscale;
+	memcpy(c.v0, o.has_v ? o.v : DEFAULT_VIEW, sizeof c.v0);
+	memcpy(c.v, c.v0, sizeof c.v);
+
+	struct plot_file **pf = xcalloc((size_t)o.nfiles, sizeof *pf);
+	for (int i = 0; i < o.nfiles; i++) {
+		pf[i] = fmt_plot_read(o.files[i], 3);
+		c.sets = xreallocarray(c.sets, (size_t)(c.nsets + pf[i]->nsets), sizeof *c.sets);
+		for (int s = 0; s < pf[i]->nsets; s++)
+			c.sets[c.nsets++] = &pf[i]->sets[s];
+	}
+
+	plot_output(&c.s, &o.cmd, render, key, &c);
+
+	for (int i = 0; i < o.nfiles; i++)
+		fmt_plot_free(pf[i]);
+	free(pf);
+	free(c.sets);
+	fmt_options_free(spec, val);
+	free(o.files);
+	return 0;
+}
