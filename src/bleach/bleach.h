@@ -93,6 +93,8 @@ void bake_apply(const double *S, int n, double *v, size_t stride, double *work);
 void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sigma);
 /* Each row of rows (nrows rows of n values, spacing d) smoothed. */
 void bake_rows(double *rows, int nrows, int n, double d, double sigma);
+/* The same for the rows of a and of b (b may be NULL), one matrix. */
+void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 
 /* ---- devrate.c: development-rate models (thesis 2.1, Table 9.1) ---- */
 

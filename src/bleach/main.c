@@ -164,8 +164,7 @@ int main(int argc, char **argv)
 
 	double dz = in.thick / (nz - 1);
 	if (in.bake != BAKE_NONE && in.diffusion > 0) {
-		bake_rows(t->M, t->nd + 1, nz, dz, in.diffusion);
-		bake_rows(t->dM, t->nd + 1, nz, dz, in.diffusion);
+		bake_rows2(t->M, t->dM, t->nd + 1, nz, dz, in.diffusion);
 	}
 
 	double *col = xreallocarray(NULL, (size_t)nz, sizeof *col);
