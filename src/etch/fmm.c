@@ -302,14 +302,21 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], struct s
 	s->heap = xreallocarray(NULL, total, sizeof *s->heap);
 	s->nheap = 0;
 	int ref[3] = {refine ? refine[0] : 1, refine ? refine[1] : 1, refine ? refine[2] : 1};
+	for (size_t n = 0; n < total; n++)
+		f->t[n] = FMM_UNREACHED;
+	if (ref[0] == 1 && ref[1] == 1 && ref[2] == 1) {
+		/* the rate grid itself: no interpolation */
+		const double *v = fmt_rate_values(r);
+		for (size_t n = 0; n < total; n++)
+			s->slow[n] = slowness(v[n]);
+		return f;
+	}
 	size_t n = 0;
 	int c[3];
 	for (c[2] = 0; c[2] < s->n[2]; c[2]++)
 		for (c[1] = 0; c[1] < s->n[1]; c[1]++)
-			for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++) {
-				f->t[n] = FMM_UNREACHED;
+			for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++)
 				s->slow[n] = slowness(rate_at(r, ref, c));
-			}
 	return f;
 }
 

@@ -5,7 +5,8 @@
  *  1. Uniform rate from the top: T = -z/R is linear, which both the
  *     first- and second-order upwind differences reproduce exactly, so
  *     nodes, trilinear queries and distances must agree to rounding
- *     (1e-12 s, 1e-9 um).
+ *     (1e-12 s, 1e-9 um), and so must the median and 95th percentile of
+ *     the distances of 101 points (fmm_distance_stats).
  *  2. z-only rate R = 1/(1 + a cos(kz)) (standing waves, 10 rate-grid
  *     nodes per period): against the exact integral of dz/R over the
  *     piecewise-linear rate the solve must be second order (refining z
@@ -104,6 +105,20 @@ static void test_plane(void)
 		ed = fmax(ed, fabs(fmm_distance(f, p, t) - fabs(p[2] + t * R)));
 	}
 	CHECK(eq < 1e-12, "plane: trilinear query error %g s", eq);
+	/* the cross-check statistic: 101 points at depths 0.35 + 0.001 q
+	 * below z = -0.35 ... their distances are 0.001 q, so the median is
+	 * 0.05 and the 95th percentile (nearest rank, the 96th) 0.095 */
+	double pts[3 * 101];
+	for (int q = 0; q < 101; q++) {
+		int m = (q * 37) % 101;     /* shuffled, so the sort matters */
+		pts[3 * q] = 0.1 + 0.008 * q;
+		pts[3 * q + 1] = 0.4;
+		pts[3 * q + 2] = -0.35 - 0.001 * m;
+	}
+	double med, p95;
+	fmm_distance_stats(f, pts, 101, 0.7, &med, &p95);
+	CHECK(fabs(med - 0.05) < 1e-9 && fabs(p95 - 0.095) < 1e-9,
+	      "plane: median %.17g, 95th percentile %.17g, want 0.05 and 0.095", med, p95);
 	CHECK(ed < 1e-9, "plane: distance error %g um", ed);
 	fmm_free(f);
 	fmt_rate_free(r);
@@ -488,6 +503,7 @@ static int bench(int argc, char **argv)
 	int ref[3] = {1, 1, argc > 5 ? atoi(argv[5]) : 1};
 	if (nx < 2 || ny < 2 || nz < 2 || ref[2] < 1)
 		die("bench: bad sizes");
+	/* solve time: best of three runs */
 	const double b[6] = {-1, 1, -1, 1, -1, 0};
 	struct ratefile *r = fmt_rate_new(nx, ny, nz, b);
 	for (int k = 0; k < nz; k++)
@@ -498,15 +514,22 @@ static int bench(int argc, char **argv)
 					0.005 + 0.1 * exp(-(x * x + y * y) / 0.3) *
 					(1 + 0.6 * cos(2 * M_PI * z / 0.14));
 			}
-	double t0 = now();
-	struct fmm *f = fmm_solve(r, ref);
+	/* best of three: the machine is shared, the minimum is the cost */
+	double best = INFINITY;
+	struct fmm *f = NULL;
+	for (int rep = 0; rep < 3; rep++) {
+		fmm_free(f);
+		double t0 = now();
+		f = fmm_solve(r, ref);
+		best = fmin(best, now() - t0);
+	}
 	double t1 = now();
 	struct tstat st = surface(f, 20);
 	double t2 = now();
 	printf("fmm %dx%dx%d (z x%d: %d nodes): solve %.3f s (%.1f Mnodes/s), "
 	       "surface T = 20 s %.3f s (%ld triangles)\n", nx, ny, nz, ref[2],
-	       f->n[0] * f->n[1] * f->n[2], t1 - t0,
-	       f->n[0] * (double)f->n[1] * f->n[2] / (t1 - t0) * 1e-6, t2 - t1, st.n);
+	       f->n[0] * f->n[1] * f->n[2], best,
+	       f->n[0] * (double)f->n[1] * f->n[2] / best * 1e-6, t2 - t1, st.n);
 	fmm_free(f);
 	fmt_rate_free(r);
 	return 0;
