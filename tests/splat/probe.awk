@@ -7,6 +7,7 @@
 #   max X1 X2 Y1 Y2     largest grid value in the box;  min: the smallest
 #   xcentroid           intensity-weighted mean x over the grid
 # Used by the splat example tests.
+BEGIN { OFMT = "%.12g" }
 { for (i = 1; i <= NF; i++) v[n++] = $i }
 END {
 	gsub(",", " ", v[0]);
