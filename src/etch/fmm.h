@@ -23,6 +23,7 @@
 #ifndef S3D_FMM_H
 #define S3D_FMM_H
 
+#include "fmt_plot.h"
 #include "fmt_rate.h"
 #include "iso.h"
 
@@ -90,5 +91,14 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * Either path may be NULL.  Files are committed atomically. */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 		      const char *path3d, const char *path2d);
+
+/* Appends to pf (dim 2) one set, with the given bounds (4 values), of the
+ * profile where the plane x = value (axis 0) or y = value (axis 1) cuts
+ * the developed surface at time t: polylines of (y, z) or (x, z), open
+ * chains first then closed loops, as etch's curves.cut (output.c).  The
+ * substrate where T < t is part of the profile, as in fmm_surface; for
+ * t <= 0 it is the resist top. */
+void fmm_cut(const struct fmm *f, double t, int axis, double value,
+	     struct plot_file *pf, const double bounds[4]);
 
 #endif

@@ -37,6 +37,12 @@
  *  8. Two seeds (0,0,0) and (0,1,0), R = 1 (thesis Figure 8.13): T is the
  *     distance to the nearer seed within 0.025 s at h = 0.05 (measured
  *     0.014), so T = 1 is the outer envelope of the two spheres.
+ *  9. Profiles (fmm_cut): the plane front, the substrate and the top
+ *     each give one chain from wall to wall at the exact depth (1e-9 um);
+ *     a hole developed through gives one chain down its side, along the
+ *     substrate and up, its points off the substrate within a quarter
+ *     cell of the surface T = t (the contour is linear along the cell
+ *     diagonals where the trilinear T is not; measured 0.034 cell).
  *
  * With arguments "bench nx ny nz [rz]" it instead times one solve on a
  * standing-wave resist field (for tests/bench/fmm.sh; not a test).
@@ -486,6 +492,70 @@ static int curves(int argc, char **argv)
 	return 0;
 }
 
+/* 9. profiles along cutlines (fmm_cut) */
+static void test_cut(void)
+{
+	const double bc[4] = {0, 0.8, -1, 0};
+	const double b[6] = {0, 1, 0, 0.8, -1, 0};
+	struct ratefile *r = uniform(11, 9, 21, b, 0.5);
+	struct fmm *f = fmm_solve(r, NULL);
+	struct plot_file *pf = fmt_plot_new(2);
+	fmm_cut(f, 0.5, 0, 0.55, pf, bc);   /* plane z = -0.25 */
+	fmm_cut(f, 3, 0, 0.55, pf, bc);     /* through: the substrate */
+	fmm_cut(f, 0, 0, 0.55, pf, bc);     /* the top */
+	const double want[3] = {-0.25, -1, 0};
+	for (int k = 0; k < 3; k++) {
+		const struct plot_set *s = &pf->sets[k];
+		int ok = s->ncurves == 1 && s->curves[0].npts >= 2;
+		const struct plot_curve *c = &s->curves[0];
+		for (int q = 0; ok && q < c->npts; q++)
+			ok = fabs(c->p[2 * q + 1] - want[k]) < 1e-9;
+		ok = ok && fmin(c->p[0], c->p[2 * c->npts - 2]) == 0 &&
+		     fmax(c->p[0], c->p[2 * c->npts - 2]) == 0.8;
+		CHECK(ok, "cut %d: %d curves, not one chain wall to wall at z = %g", k,
+		      s->ncurves, want[k]);
+	}
+	fmt_plot_free(pf);
+	fmm_free(f);
+	fmt_rate_free(r);
+
+	/* a hole developed through in the middle: one chain from wall to
+	 * wall, down the side, along the substrate and up again */
+	const double bh[6] = {-1, 1, -0.5, 0.5, -1, 0}, bch[4] = {-1, 1, -1, 0};
+	r = fmt_rate_new(41, 21, 41, bh);
+	for (int k = 0; k < 41; k++)
+		for (int j = 0; j < 21; j++)
+			for (int i = 0; i < 41; i++) {
+				double x = fmt_rate_x(r, i);
+				r->arrays[0].v[fmt_rate_index(r, i, j, k)] = 0.2 + 2 * exp(-x * x / 0.1);
+			}
+	f = fmm_solve(r, NULL);
+	pf = fmt_plot_new(2);
+	fmm_cut(f, 1, 1, 0, pf, bch);
+	const struct plot_set *s = &pf->sets[0];
+	CHECK(s->ncurves == 1, "hole: %d curves, want one", s->ncurves);
+	if (s->ncurves == 1) {
+		const struct plot_curve *c = &s->curves[0];
+		int nsub = 0;
+		double worst = 0;
+		for (int q = 0; q < c->npts; q++) {
+			nsub += c->p[2 * q + 1] == -1;
+			double p[3] = {c->p[2 * q], 0, c->p[2 * q + 1]};
+			if (c->p[2 * q + 1] > -1)
+				worst = fmax(worst, fmm_distance(f, p, 1));
+		}
+		CHECK(fmin(c->p[0], c->p[2 * c->npts - 2]) == -1 &&
+		      fmax(c->p[0], c->p[2 * c->npts - 2]) == 1 && nsub >= 2,
+		      "hole: the chain does not run wall to wall along the substrate");
+		printf("hole profile: %d points, %d on the substrate, at most %.3g um "
+		       "from T = t\n", c->npts, nsub, worst);
+		CHECK(worst < 0.25 * f->h[0], "hole: a profile point %g um from T = t", worst);
+	}
+	fmt_plot_free(pf);
+	fmm_free(f);
+	fmt_rate_free(r);
+}
+
 static double now(void)
 {
 	struct timespec ts;
@@ -549,6 +619,7 @@ int main(int argc, char **argv)
 	test_zero();
 	test_selfconv();
 	test_two_seeds();
+	test_cut();
 	if (failures) {
 		printf("%d failures\n", failures);
 		return 1;
