@@ -85,6 +85,16 @@ static void parse_options(int argc, char **argv, struct options *o)
 
 static int quiet;
 
+/* What main holds while it may still die: kept reachable from here so
+ * that a fatal error (die exits at once) is not reported as a leak by
+ * the sanitizers; main frees it all on success. */
+static struct {
+	struct contour *c;
+	struct ratefile *r;
+	double *dose;
+	struct exposure e;
+} held;
+
 static void progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 static void progress(const char *fmt, ...)
 {
@@ -124,7 +134,7 @@ int main(int argc, char **argv)
 	parse_options(argc, argv, &o);
 	quiet = o.quiet;
 
-	struct contour *c = fmt_contour_read(o.contour, 0);
+	struct contour *c = held.c = fmt_contour_read(o.contour, 0);
 	struct bleach_input in;
 	fmt_bleach_read(o.input, &in);
 
@@ -134,14 +144,14 @@ int main(int argc, char **argv)
 		die("%s:%ld: grid of %.0f points is too large (at most %ld)", o.input,
 		    in.line_nz ? in.line_nz : 1L, npts, BLEACH_MAX_POINTS);
 	double bounds[6] = {c->xmin, c->xmax, c->ymin, c->ymax, -in.thick, 0};
-	struct ratefile *r = fmt_rate_new(nx, ny, nz, bounds);
+	struct ratefile *r = held.r = fmt_rate_new(nx, ny, nz, bounds);
 	double *M = fmt_rate_add_array(r, "M");
 	double *R = fmt_rate_values(r);
 	size_t ncol = (size_t)nx * (size_t)ny;
 
 	/* column doses, mJ/cm2; negative intensities (interpolation ripple
 	 * in an aerial image) expose nothing */
-	double *dose = xreallocarray(NULL, ncol, sizeof *dose);
+	double *dose = held.dose = xreallocarray(NULL, ncol, sizeof *dose);
 	double dmax = 0;
 	for (int j = 0; j < ny; j++)
 		for (int i = 0; i < nx; i++) {
@@ -155,9 +165,9 @@ int main(int argc, char **argv)
 	progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
 		 c->nx, c->ny, o.contour, dmax);
 
-	struct exposure e;
-	exposure_init(&e, &in, nz, dmax, 1.0);
-	struct dose_table *t = dose_table_build(&e, dmax);
+	struct exposure *e = &held.e;
+	exposure_init(e, &in, nz, dmax, 1.0);
+	struct dose_table *t = dose_table_build(e, dmax);
 	progress("exposure: %d dose steps of %g mJ/cm2, %d points through %g um, %s",
 		 t->nd, t->h, nz, in.thick,
 		 in.standing ? "thin-film standing waves" : "Beer-Lambert, no reflections");
@@ -205,7 +215,7 @@ int main(int argc, char **argv)
 	free(col);
 	free(dose);
 	dose_table_free(t);
-	exposure_free(&e);
+	exposure_free(e);
 	fmt_rate_free(r);
 	fmt_contour_free(c);
 	return 0;
