@@ -18,14 +18,17 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: splat [-o contour-file] [-q] input-file\n"
+	"usage: splat [-o contour-file] [-q] [-name] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
-	"  -q               quiet: no progress lines on stderr\n";
+	"  -q               quiet: no progress lines on stderr\n"
+	"  -name            print the name of the contour-file it would write, and\n"
+	"                   exit (for scripts such as sample3D)\n";
 
 struct options {
 	const char *output;
 	int quiet;
+	int name_only;
 	const char *input;
 };
 
@@ -43,6 +46,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		}
 		if (args_flag(&a, "-q"))
 			o->quiet = 1;
+		else if (args_flag(&a, "-name"))
+			o->name_only = 1;
 		else if (args_str(&a, "-o", &o->output))
 			;
 		else if (s[0] == '-' && s[1] != '\0')
@@ -89,6 +94,13 @@ int main(int argc, char **argv)
 	struct splat_input *in = fmt_splat_read(o.input);
 	const struct splat_mask *m = &in->mask;
 	const char *out = o.output ? o.output : in->contour;
+	if (o.name_only) {
+		/* the driver passes this name on to bleach (SAMPLE3D(L) -if) */
+		printf("%s\n", out);
+		fshut(stdout, "stdout");
+		fmt_splat_free(in);
+		return 0;
+	}
 	if (!o.quiet)
 		fprintf(stderr, "splat: %s: %d rects, lambda %g um, NA %g, %dx%d grid\n",
 			o.input, m->nrects, in->wavelength, in->na, in->nx, in->ny);
