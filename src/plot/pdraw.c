@@ -303,17 +303,21 @@ static void axis3(struct draw *d, const struct view *vw, const double *box, int 
 	}
 }
 
-/* x along the front bottom edge, y along the right bottom edge, z up the
- * front left edge, as seen from the current view. */
+/* The axes run along silhouette edges of the box, so the data never
+ * hides them: x and y along the bottom edges of the faces turned to the
+ * eye, z up the vertical edge at the left of the picture. */
 static void axes(struct draw *d, const struct view *vw, const double *box, const struct ctx *c)
 {
-	int yf = vw->w[1] > 0;                  /* front face: y = ymax? */
-	int xr = vw->e1[0] >= 0;                /* right side: x = xmax? */
-	double yfront = box[2 + yf], xright = box[xr], xleft = box[!xr];
-	double sy = yf ? 1 : -1, sx = xr ? 1 : -1;
+	int xf = vw->w[0] >= 0, yf = vw->w[1] >= 0;     /* front faces: max sides? */
+	double xfront = box[xf], yfront = box[2 + yf];
+	double sx = xf ? 1 : -1, sy = yf ? 1 : -1;
 	double px[3] = {0, yfront, box[4]}, ox[3] = {0, sy, 0};
-	double py[3] = {xright, 0, box[4]}, oy[3] = {sx, 0, 0};
-	double pz[3] = {xleft, yfront, 0}, oz[3] = {-vw->e1[0], -vw->e1[1], 0};
+	double py[3] = {xfront, 0, box[4]}, oy[3] = {sx, 0, 0};
+	/* of the two side corners (xfront, yback) and (xback, yfront), the
+	 * one further left on the screen */
+	double ca[3] = {xfront, box[2 + !yf], 0}, cb[3] = {box[!xf], yfront, 0};
+	double *pz = dot3(ca, vw->e1) * vw->sc[0] <= dot3(cb, vw->e1) * vw->sc[0] ? ca : cb;
+	double oz[3] = {-vw->e1[0], -vw->e1[1], 0};
 	/* z ticks point to the screen's left, in the x-y plane */
 	if (!normalize3(oz))
 		oz[0] = -sx;
@@ -633,7 +637,8 @@ static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set 
 	if (c->s.toplabel && *c->s.toplabel)
 		draw_text(d, d->w / 2, AREA_Y1 + 40, FONT_TOP, 0, DRAW_CENTER, DRAW_BOTTOM,
 			  c->s.toplabel);
-	axes(d, &vw, box, c);
+	if (!c->hidden)
+		axes(d, &vw, box, c);
 	if (c->hidden && !c->nosort) {
 		draw_hidden(d, &vw, c, st);
 	} else {
@@ -650,6 +655,8 @@ static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set 
 			free(xy);
 		}
 	}
+	if (c->hidden)     /* on top: polygons must not cover the labels */
+		axes(d, &vw, box, c);
 	for (int i = 0; i < st->ncurves; i++) {
 		int mk = curve_marker(c, i);
 		if (!mk)
