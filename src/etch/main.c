@@ -11,6 +11,7 @@
 #include "num.h"
 #include "util.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -161,17 +162,31 @@ static void output_names(struct etch_opts *o, char **n2, char **nc)
 	o->outcut = o->cut_axis >= 0 ? *nc : NULL;
 }
 
+/* A usage error found after reading the rate file (it gives the box). */
+static _Noreturn void usage_die(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static _Noreturn void usage_die(const char *fmt, ...)
+{
+	va_list ap;
+	fprintf(stderr, "%s: ", util_prog());
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fputc('\n', stderr);
+	fputs(usage, stderr);
+	exit(EXIT_USAGE);
+}
+
 static void check_inside(const struct rfield *f, const struct etch_opts *o)
 {
 	for (int d = 0; d < 3; d++)
 		if (o->seed && (o->seedp[d] < f->lo[d] || o->seedp[d] > f->hi[d]))
-			die_status(EXIT_USAGE, "-seed point outside the rate box "
-				   "(%c from %g to %g)", "xyz"[d], f->lo[d], f->hi[d]);
+			usage_die("-seed point outside the rate box (%c from %g to %g)",
+				  "xyz"[d], f->lo[d], f->hi[d]);
 	if (o->cut_axis >= 0) {
 		int d = o->cut_axis;
 		if (o->cut_value < f->lo[d] || o->cut_value > f->hi[d])
-			die_status(EXIT_USAGE, "-cut %c %g is outside the rate box (%g to %g)",
-				   "xy"[d], o->cut_value, f->lo[d], f->hi[d]);
+			usage_die("-cut %c %g is outside the rate box (%g to %g)",
+				  "xy"[d], o->cut_value, f->lo[d], f->hi[d]);
 	}
 }
 

@@ -60,23 +60,9 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 	f->gmax = sqrt(gmax2);
 }
 
-double rfield_eval(const struct rfield *f, const double p[3], double g[3])
+/* R and grad R in cell c at local coordinates t (each in [0, 1]). */
+static double cell_eval(const struct rfield *f, const int c[3], const double t[3], double g[3])
 {
-	int c[3];
-	double t[3];
-	for (int d = 0; d < 3; d++) {
-		double u = (p[d] - f->lo[d]) / f->h[d];
-		if (!(u > 0))           /* also catches NaN */
-			u = 0;
-		double top = f->n[d] - 1;
-		if (u > top)
-			u = top;
-		int i = (int)u;
-		if (i > f->n[d] - 2)
-			i = f->n[d] - 2;
-		c[d] = i;
-		t[d] = u - i;
-	}
 	size_t sx = 1, sy = (size_t)f->n[0], sz = (size_t)f->n[0] * f->n[1];
 	const double *v = f->v + c[2] * sz + c[1] * sy + c[0];
 	double v000 = v[0], v100 = v[sx], v010 = v[sy], v110 = v[sx + sy];
@@ -95,6 +81,46 @@ double rfield_eval(const struct rfield *f, const double p[3], double g[3])
 		double dy0 = a10 - a00, dy1 = a11 - a01;
 		g[1] = (dy0 + tz * (dy1 - dy0)) / f->h[1];
 		g[2] = (b1 - b0) / f->h[2];
+	}
+	return r;
+}
+
+double rfield_eval(const struct rfield *f, const double p[3], double g[3])
+{
+	int c[3];
+	double t[3];
+	int face = -1;
+	for (int d = 0; d < 3; d++) {
+		double u = (p[d] - f->lo[d]) / f->h[d];
+		if (!(u > 0))           /* also catches NaN */
+			u = 0;
+		double top = f->n[d] - 1;
+		if (u > top)
+			u = top;
+		int i = (int)u;
+		if (i > f->n[d] - 2)
+			i = f->n[d] - 2;
+		c[d] = i;
+		t[d] = u - i;
+		if (t[d] == 0 && i > 0)
+			face = d;
+	}
+	double r = cell_eval(f, c, t, g);
+	if (g && face >= 0) {
+		/* On a face between cells the interpolant has a kink: take the
+		 * mean of the two one-sided slopes, so that mirror-symmetric
+		 * rates turn mirror-symmetric rays (nodes of the flat start sit
+		 * on grid planes).  Exactly on the face only: t == 0 exactly. */
+		for (int d = 0; d < 3; d++) {
+			if (!(t[d] == 0 && c[d] > 0))
+				continue;
+			int c2[3] = {c[0], c[1], c[2]};
+			double t2[3] = {t[0], t[1], t[2]}, g2[3];
+			c2[d]--;
+			t2[d] = 1;
+			cell_eval(f, c2, t2, g2);
+			g[d] = 0.5 * (g[d] + g2[d]);
+		}
 	}
 	return r;
 }
