@@ -6,17 +6,21 @@
  * front, in grid cells).
  *
  * The distance starts from the first-order estimate |T - t| / |grad T|
- * (|grad T| = 1/R by the eikonal equation) and is then made exact for the
- * interpolated field by bracketing the crossing along the gradient line
- * and bisecting: near the surface the gradient is its normal, so this is
- * the normal distance, and the search is robust where the estimate is
- * poor (rates changing within a cell, standing waves).
+ * (|grad T| = 1/R by the eikonal equation), refined by bracketing the
+ * crossing along the gradient line and bisecting: near a smooth surface
+ * the gradient is its normal, so this is the normal distance.  The point
+ * found is on the surface, so its distance bounds the true one; the
+ * triangles of the surface inside that ball are then searched for the
+ * nearest, which makes the answer the Euclidean distance to the written
+ * surface also where T has kinks (fronts that met) and the gradient line
+ * goes astray.
  */
 #include "fmm.h"
 #include "util.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Bisection steps: 60 halvings take any bracket below a double's
  * resolution of it. */
@@ -75,6 +79,115 @@ static double along(const struct fmm *f, const double p[3], const double u[3], d
 	return fmm_time_at(f, x);
 }
 
+/* Closest point of triangle abc to p (Ericson, Real-Time Collision
+ * Detection, 5.1.5); returns the squared distance. */
+static double tri_dist2(const double p[3], const double *a, const double *b, const double *c)
+{
+	double ab[3], ac[3], ap[3], x[3];
+	for (int d = 0; d < 3; d++) {
+		ab[d] = b[d] - a[d];
+		ac[d] = c[d] - a[d];
+		ap[d] = p[d] - a[d];
+	}
+#define DOT(u, v) ((u)[0] * (v)[0] + (u)[1] * (v)[1] + (u)[2] * (v)[2])
+	double d1 = DOT(ab, ap), d2 = DOT(ac, ap);
+	double bp[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
+	double cp[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+	double d3 = DOT(ab, bp), d4 = DOT(ac, bp), d5 = DOT(ab, cp), d6 = DOT(ac, cp);
+#undef DOT
+	double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+	if (d1 <= 0 && d2 <= 0) {
+		memcpy(x, a, sizeof x);
+	} else if (d3 >= 0 && d4 <= d3) {
+		memcpy(x, b, sizeof x);
+	} else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+		double v = d1 / (d1 - d3);
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + v * ab[d];
+	} else if (d6 >= 0 && d5 <= d6) {
+		memcpy(x, c, sizeof x);
+	} else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+		double w = d2 / (d2 - d6);
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + w * ac[d];
+	} else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+		double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+		for (int d = 0; d < 3; d++)
+			x[d] = b[d] + w * (c[d] - b[d]);
+	} else {
+		double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + v * ab[d] + w * ac[d];
+	}
+	double e = 0;
+	for (int d = 0; d < 3; d++)
+		e += (p[d] - x[d]) * (p[d] - x[d]);
+	return e;
+}
+
+struct nearest {
+	const double *p;
+	double best2;
+};
+
+static void nearest_emit(void *ctx, const double tri[9])
+{
+	struct nearest *nr = ctx;
+	double e = tri_dist2(nr->p, tri, tri + 3, tri + 6);
+	if (e < nr->best2)
+		nr->best2 = e;
+}
+
+/* Largest block searched for the exact distance, in cells: beyond it
+ * the gradient-line distance stands (a query costs at most this much
+ * isosurface work). */
+#define MAX_BLOCK_CELLS 4000000.0
+
+/* The distance from p to the triangulated surface T = t (the triangles
+ * fmm_surface writes, without the caps), searched in blocks of cells
+ * around p that double until the nearest triangle lies inside the ball
+ * the block contains; INFINITY if none within the largest block. */
+static double surface_distance(const struct fmm *f, const double p[3], double t, double radius)
+{
+	double hmax = fmax(f->h[0], fmax(f->h[1], f->h[2]));
+	radius = fmax(radius, 1e-3 * hmax);
+	for (;;) {
+		int lo[3], hi[3], nb[3], whole = 1;
+		double cells = 1, b[6];
+		for (int d = 0; d < 3; d++) {
+			double u0 = (p[d] - radius - f->bounds[2 * d]) / f->h[d];
+			double u1 = (p[d] + radius - f->bounds[2 * d]) / f->h[d];
+			lo[d] = u0 <= 0 ? 0 : (int)fmin(floor(u0), f->n[d] - 2);
+			hi[d] = u1 >= f->n[d] - 1 ? f->n[d] - 1 : (int)fmax(ceil(u1), lo[d] + 1);
+			whole &= lo[d] == 0 && hi[d] == f->n[d] - 1;
+			nb[d] = hi[d] - lo[d] + 1;
+			cells *= nb[d] - 1;
+			b[2 * d] = f->bounds[2 * d] + lo[d] * f->h[d];
+			b[2 * d + 1] = hi[d] == f->n[d] - 1 ? f->bounds[2 * d + 1]
+							     : f->bounds[2 * d] + hi[d] * f->h[d];
+		}
+		if (cells > MAX_BLOCK_CELLS)
+			return INFINITY;
+		size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
+		double *v = xreallocarray(NULL, nn, sizeof *v);
+		size_t m = 0;
+		for (int k = lo[2]; k <= hi[2]; k++)
+			for (int j = lo[1]; j <= hi[1]; j++) {
+				const double *row = f->t + ((size_t)k * (size_t)f->n[1] + (size_t)j) *
+							   (size_t)f->n[0];
+				for (int i = lo[0]; i <= hi[0]; i++)
+					v[m++] = row[i];
+			}
+		struct nearest nr = {p, INFINITY};
+		iso_surface(v, nb[0], nb[1], nb[2], b, t, 0, nearest_emit, &nr);
+		free(v);
+		double dist = sqrt(nr.best2);
+		if (dist <= radius || whole)
+			return dist;
+		radius *= 2;
+	}
+}
+
 double fmm_distance(const struct fmm *f, const double p[3], double t)
 {
 	double q[3];
@@ -93,48 +206,59 @@ double fmm_distance(const struct fmm *f, const double p[3], double t)
 		if (fmm_time_at(f, b) < t)
 			sub = q[2] - f->bounds[4];
 	}
+	double hmax = fmax(f->h[0], fmax(f->h[1], f->h[2]));
+	if (f->n[0] < 2 || f->n[1] < 2 || f->n[2] < 2)
+		return sub < INFINITY ? sub : FMM_UNREACHED;
 	double g[3];
 	gradient(f, q, g);
 	double gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-	if (!(gn > 0))
-		return sub < INFINITY ? sub : FMM_UNREACHED;
-	/* walk downhill in T if T(p) > t, uphill otherwise */
-	double sg = phi0 > 0 ? -1 : 1, u[3];
-	for (int d = 0; d < 3; d++)
-		u[d] = sg * g[d] / gn;
-	double est = fabs(phi0) / gn;
-	double diag = 0;
-	for (int d = 0; d < 3; d++)
-		diag += (f->bounds[2 * d + 1] - f->bounds[2 * d]) *
-			(f->bounds[2 * d + 1] - f->bounds[2 * d]);
-	diag = sqrt(diag);
-	double lo = 0, hi = est, step = est;
-	int found = 0;
-	for (int k = 0; k < BRACKET_STEPS && lo <= diag; k++) {
-		double ph = along(f, q, u, hi) - t;
-		if ((ph > 0) != (phi0 > 0) || ph == 0) {
-			found = 1;
-			break;
-		}
-		lo = hi;
-		step *= 1.5;
-		hi = lo + step;
-	}
-	double d = est;
-	if (found) {
-		for (int k = 0; k < BISECT_STEPS; k++) {
-			double mid = 0.5 * (lo + hi);
-			if (mid <= lo || mid >= hi)
+	double est = gn > 0 ? fabs(phi0) / gn : 2 * hmax;
+	/* a crossing along the gradient line: a point of the surface, so an
+	 * upper bound on the distance (and the distance itself where the
+	 * surface is smooth on the scale of the distance) */
+	double dline = INFINITY;
+	if (gn > 0) {
+		double sg = phi0 > 0 ? -1 : 1, u[3];
+		for (int d = 0; d < 3; d++)
+			u[d] = sg * g[d] / gn;
+		double diag = 0;
+		for (int d = 0; d < 3; d++)
+			diag += (f->bounds[2 * d + 1] - f->bounds[2 * d]) *
+				(f->bounds[2 * d + 1] - f->bounds[2 * d]);
+		diag = sqrt(diag);
+		double lo = 0, hi = est, step = est;
+		int found = 0;
+		for (int k = 0; k < BRACKET_STEPS && lo <= diag; k++) {
+			double ph = along(f, q, u, hi) - t;
+			if ((ph > 0) != (phi0 > 0) || ph == 0) {
+				found = 1;
 				break;
-			double pm = along(f, q, u, mid) - t;
-			if ((pm > 0) == (phi0 > 0) && pm != 0)
-				lo = mid;
-			else
-				hi = mid;
+			}
+			lo = hi;
+			step *= 1.5;
+			hi = lo + step;
 		}
-		d = 0.5 * (lo + hi);
+		if (found) {
+			for (int k = 0; k < BISECT_STEPS; k++) {
+				double mid = 0.5 * (lo + hi);
+				if (mid <= lo || mid >= hi)
+					break;
+				double pm = along(f, q, u, mid) - t;
+				if ((pm > 0) == (phi0 > 0) && pm != 0)
+					lo = mid;
+				else
+					hi = mid;
+			}
+			dline = 0.5 * (lo + hi);
+		}
 	}
-	return fmin(d, sub);
+	/* where fronts meet (loops, the fingers of thesis Figure 8.16) T has
+	 * a kink and the gradient line can miss the nearest part of the
+	 * surface: search the triangles within the ball it gives */
+	double bound = fmin(dline, sub);
+	double dsurf = surface_distance(f, q, t, bound < INFINITY ? bound : est);
+	double d = fmin(fmin(dline, sub), dsurf);
+	return d < INFINITY ? d : est;
 }
 
 static int cmp_double(const void *a, const void *b)

@@ -44,8 +44,11 @@
  *     cell of the surface T = t (the contour is linear along the cell
  *     diagonals where the trilinear T is not; measured 0.034 cell).
  *
- * With arguments "bench nx ny nz [rz]" it instead times one solve on a
- * standing-wave resist field (for tests/bench/fmm.sh; not a test).
+ * With arguments it is a driver instead: "bench nx ny nz [rz]" times a
+ * solve on a standing-wave resist field (tests/bench/fmm.sh); "curves
+ * ratefile rz out t..." writes out and out.2D (tests/fmm/); "xcheck
+ * ratefile curves.plot rz t..." prints the cross-check statistic of a
+ * ray-string run.
  */
 #include "fmm.h"
 #include "fmt_plot.h"
@@ -556,6 +559,43 @@ static void test_cut(void)
 	fmt_rate_free(r);
 }
 
+/* xcheck RATEFILE CURVES.PLOT rz t...: the cross-check statistic of the
+ * two engines: per set of a ray-string curves.plot (the vertices of its
+ * triangles), the median and 95th-percentile distance to the
+ * fast-marching surface T = t, in um and in rate-grid z cells */
+static int xcheck(int argc, char **argv)
+{
+	if (argc < 6)
+		die("usage: fmm_exact xcheck ratefile curves.plot rz t...");
+	struct ratefile *r = fmt_rate_read(argv[2]);
+	struct plot_file *pf = fmt_plot_read(argv[3], 3);
+	int ref[3] = {1, 1, atoi(argv[4])};
+	struct fmm *f = fmm_solve(r, ref);
+	double cell = (r->zmax - r->zmin) / (r->nz - 1);
+	if (argc - 5 != pf->nsets)
+		die("xcheck: %d times for %d sets", argc - 5, pf->nsets);
+	for (int k = 0; k < pf->nsets; k++) {
+		const struct plot_set *set = &pf->sets[k];
+		size_t n = 0;
+		for (int c = 0; c < set->ncurves; c++)
+			n += (size_t)set->curves[c].npts;
+		double *p = xreallocarray(NULL, n + 1, 3 * sizeof *p);
+		n = 0;
+		for (int c = 0; c < set->ncurves; c++)
+			for (int q = 0; q < set->curves[c].npts; q++, n++)
+				memcpy(p + 3 * n, set->curves[c].p + 3 * q, 3 * sizeof *p);
+		double med, p95, t = atof(argv[5 + k]);
+		fmm_distance_stats(f, p, n, t, &med, &p95);
+		printf("t = %g s (z x%d): %zu vertices: median %.4g um (%.3f cells), "
+		       "95%% %.4g um (%.3f cells)\n", t, ref[2], n, med, med / cell, p95, p95 / cell);
+		free(p);
+	}
+	fmm_free(f);
+	fmt_plot_free(pf);
+	fmt_rate_free(r);
+	return 0;
+}
+
 static double now(void)
 {
 	struct timespec ts;
@@ -612,6 +652,8 @@ int main(int argc, char **argv)
 		return bench(argc, argv);
 	if (argc > 1 && strcmp(argv[1], "curves") == 0)
 		return curves(argc, argv);
+	if (argc > 1 && strcmp(argv[1], "xcheck") == 0)
+		return xcheck(argc, argv);
 	test_plane();
 	test_zonly();
 	test_sphere();
