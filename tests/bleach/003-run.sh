@@ -6,7 +6,11 @@
 #  - the file carries the arrays "rate" and "M", nz planes from -thickness
 #    to 0, M in [0, 1], rates positive;
 #  - without -q there is one progress line per stage on stderr, with -q
-#    none;  -o names the output.
+#    none;  -o names the output;
+#  - "grid nx 5 ny 7" resamples the image to a 5 x 7 grid over the same
+#    window, and a uniform image stays uniform;
+#  - "standingwaves off" changes M (Beer-Lambert has no swing), and its
+#    M falls monotonically with depth on a clear field.
 . "$TOP/tests/lib/common.sh"
 printf -- '-1 1 -1 1\n2 2\n1 1 1 1\n' >clear.cont
 count=0
@@ -41,5 +45,20 @@ same first.bin rval.3D.binary
 n=$(grep -c '^bleach: ' progress.txt)
 [ "$n" -ge 5 ] || fail "expected a progress line per stage, got $n: $(cat progress.txt)"
 grep -q 'bake' progress.txt || fail "no bake progress line"
+# resampling
+{ cat s.in; echo "grid nx 5 ny 7 nz 40"; } | grep -v '^grid nz' >r.in
+bleach -q -ascii -o r.txt spot.cont r.in || fail "grid nx ny run"
+sed -n 2p r.txt | grep -q '^5 7 40 2$' || fail "grid nx 5 ny 7: header $(sed -n 2p r.txt)"
+sed -n 3p r.txt | grep -q '^-1 1 -1 1 ' || fail "resampled window: $(sed -n 3p r.txt)"
+# standing waves off: M monotonic in depth, and different from on
+sed 's/^grid .*/grid nz 80/; /^bake/d' "$TOP/examples/resists/olinhunt6512.in" >on.in
+{ cat on.in; echo "standingwaves off"; } >off.in
+bleach -q -ascii -o on.txt clear.cont on.in || fail "standing waves on"
+bleach -q -ascii -o off.txt clear.cont off.in || fail "standing waves off"
+cmp -s on.txt off.txt && fail "standingwaves off changes nothing"
+# planes run from the substrate (k = 0) up; the top is the most exposed,
+# so M must fall with k
+awk '/^M$/ { m = 1; next } m && NF == 2 { n++; if (n % 2 == 1) { if (seen && $1 > prev + 1e-12) { print "M rises towards the top: " prev " -> " $1; exit 1 } prev = $1; seen = 1 } }' off.txt ||
+	fail "Beer-Lambert M not monotonic"
 echo "$count resist files run"
 exit 0
