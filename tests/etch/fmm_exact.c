@@ -36,7 +36,9 @@
  *  7. Self-convergence under refinement (see test_selfconv).
  *  8. Two seeds (0,0,0) and (0,1,0), R = 1 (thesis Figure 8.13): T is the
  *     distance to the nearer seed within 0.025 s at h = 0.05 (measured
- *     0.014), so T = 1 is the outer envelope of the two spheres.
+ *     0.014), so T = 1 is the outer envelope of the two spheres; from
+ *     the ridge between them (a kink of T, no gradient) fmm_distance
+ *     finds the circle where the spheres meet within 0.025 um.
  *  9. Profiles (fmm_cut): the plane front, the substrate and the top
  *     each give one chain from wall to wall at the exact depth (1e-9 um);
  *     a hole developed through gives one chain down its side, along the
@@ -464,7 +466,18 @@ static void test_two_seeds(void)
 		if (want > 0.3)
 			emax = fmax(emax, fabs(fmm_time_at(f, p) - want));
 	}
-	printf("two seeds: %ld triangles of T = 1; max |T - min(r0, r1)| %.3g s\n", st.n, emax);
+	/* on the ridge between the seeds T has a kink and no gradient: the
+	 * nearest surface is the circle where the spheres meet (y = 0.5,
+	 * radius sqrt(3)/2) */
+	const double ridge[2][3] = {{0, 0.5, 0}, {0.1, 0.5, 0.05}};
+	double dr = 0;
+	for (int q = 0; q < 2; q++) {
+		double off = hypot(ridge[q][0], ridge[q][2]);
+		dr = fmax(dr, fabs(fmm_distance(f, ridge[q], 1) - (sqrt(0.75) - off)));
+	}
+	CHECK(dr < 0.025, "two seeds: distance from the ridge off by %g um", dr);
+	printf("two seeds: %ld triangles of T = 1; max |T - min(r0, r1)| %.3g s; "
+	       "ridge distance error %.3g um\n", st.n, emax, dr);
 	CHECK(st.n > 1000 && emax < 0.025, "two seeds: %ld triangles, error %g s", st.n, emax);
 	fmm_free(f);
 	fmt_rate_free(r);
