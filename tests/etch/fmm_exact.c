@@ -45,6 +45,9 @@
  *     substrate and up, its points off the substrate within a quarter
  *     cell of the surface T = t (the contour is linear along the cell
  *     diagonals where the trilinear T is not; measured 0.034 cell).
+ * 10. Degenerate grids (one node thick, refined single cells, zero rate,
+ *     seeds outside the box) give exact T (1e-12 s) and no crash, NaN
+ *     or leak (under the sanitizers).
  *
  * With arguments it is a driver instead: "bench nx ny nz [rz]" times a
  * solve on a standing-wave resist field (tests/bench/fmm.sh); "curves
@@ -609,6 +612,48 @@ static int xcheck(int argc, char **argv)
 	return 0;
 }
 
+/* 10. degenerate grids: one node thick, all rates zero, seeds outside the
+ * box, a large refinement of a single cell */
+static void test_degenerate(void)
+{
+	const double b[6] = {0, 1, 0, 1, -1, 0};
+	int sizes[4][3] = {{1, 1, 5}, {1, 4, 5}, {3, 3, 1}, {2, 2, 2}};
+	for (int c = 0; c < 4; c++) {
+		struct ratefile *r = uniform(sizes[c][0], sizes[c][1], sizes[c][2], b, 0.5);
+		int ref[3] = {3, 5, 7};
+		struct fmm *f = fmm_solve(r, ref);
+		double p[3] = {0.3, 0.6, -0.5}, want = sizes[c][2] > 1 ? 1.0 : 0.0;
+		double tp = fmm_time_at(f, p);
+		CHECK(fabs(tp - want) < 1e-12, "grid %dx%dx%d: T %g, want %g", sizes[c][0],
+		      sizes[c][1], sizes[c][2], tp, want);
+		struct tstat st = surface(f, 0.5);
+		CHECK(!st.nan && (sizes[c][0] > 1 && sizes[c][1] > 1 && sizes[c][2] > 1) == (st.n > 0),
+		      "grid %dx%dx%d: %ld triangles", sizes[c][0], sizes[c][1], sizes[c][2], st.n);
+		double dd = fmm_distance(f, p, 0.5), med, p95;
+		CHECK(dd >= 0, "grid %dx%dx%d: distance %g", sizes[c][0], sizes[c][1], sizes[c][2], dd);
+		fmm_distance_stats(f, p, 1, 0.5, &med, &p95);
+		struct plot_file *pf = fmt_plot_new(2);
+		const double bc[4] = {0, 1, -1, 0};
+		fmm_cut(f, 0.5, 0, 0.5, pf, bc);
+		fmt_plot_free(pf);
+		fmm_free(f);
+		fmt_rate_free(r);
+	}
+	struct ratefile *r = uniform(5, 5, 5, b, 0);
+	struct fmm *f = fmm_solve(r, NULL);
+	CHECK(f->accepted == 25, "zero rate: %ld nodes reached, want the top's 25", f->accepted);
+	fmm_free(f);
+	fmt_rate_free(r);
+	r = uniform(5, 5, 5, b, 1);
+	const double out[6] = {-5, 0.5, -0.5, 0.5, 0.5, 9};    /* clamped to the faces */
+	f = fmm_solve_points(r, NULL, out, 2);
+	double p[3] = {0, 0.5, -0.5};
+	CHECK(fabs(fmm_time_at(f, p)) < 1e-12, "seed clamped to x = 0: T %g there",
+	      fmm_time_at(f, p));
+	fmm_free(f);
+	fmt_rate_free(r);
+}
+
 static double now(void)
 {
 	struct timespec ts;
@@ -675,6 +720,7 @@ int main(int argc, char **argv)
 	test_selfconv();
 	test_two_seeds();
 	test_cut();
+	test_degenerate();
 	if (failures) {
 		printf("%d failures\n", failures);
 		return 1;
