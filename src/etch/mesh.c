@@ -318,6 +318,20 @@ void mesh_merge(struct mesh *m, int s, int del)
 {
 	int keep = seg_other(m, s, del);
 	int tris[2] = {m->seg[s].t[0], m->seg[s].t[1]};
+	/* the triangles around del, to be given to keep at the end (a
+	 * segment of del may be gone by then, e.g. when del is the apex of
+	 * a 3-triangle fan) */
+	struct node *nd = &m->node[del];
+	int *around = xreallocarray(NULL, 2 * (size_t)nd->nseg + 1, sizeof *around);
+	int na = 0;
+	for (int i = 0; i < nd->nseg; i++)
+		for (int k = 0; k < 2; k++) {
+			int t = m->seg[nd->seg[i]].t[k], dup = 0;
+			for (int j = 0; j < na; j++)
+				dup |= around[j] == t;
+			if (t >= 0 && !dup)
+				around[na++] = t;
+		}
 	for (int k = 0; k < 2; k++) {
 		int t = tris[k];
 		struct triangle *tr = &m->tri[t];
@@ -344,18 +358,18 @@ void mesh_merge(struct mesh *m, int s, int del)
 	}
 	kill_segment(m, s);
 	/* the remaining segments and triangles of del go to keep */
-	struct node *nd = &m->node[del];
+	for (int i = 0; i < na; i++) {
+		struct triangle *tr = &m->tri[around[i]];
+		if (tr->alive)
+			for (int j = 0; j < 3; j++)
+				if (tr->n[j] == del)
+					tr->n[j] = keep;
+	}
+	free(around);
+	nd = &m->node[del];
 	for (int i = 0; i < nd->nseg; i++) {
 		int x = nd->seg[i];
 		struct segment *sg = &m->seg[x];
-		for (int k = 0; k < 2; k++) {
-			int t = sg->t[k];
-			if (t < 0)
-				continue;
-			for (int j = 0; j < 3; j++)
-				if (m->tri[t].n[j] == del)
-					m->tri[t].n[j] = keep;
-		}
 		if (sg->n[0] == del)
 			sg->n[0] = keep;
 		else
