@@ -52,9 +52,14 @@ struct exposure {
  * allows (checked by tests/bleach/expose.c). */
 #define EXPOSE_STEP 0.1
 
+/* Most dose steps of one run: beyond, C * dose is absurd (every column
+ * bleached to nothing) and the run would take hours. */
+#define EXPOSE_MAX_STEPS 1e7
+
 /* dmax: the largest dose any column gets; step_scale multiplies the
- * default step (tests halve it). */
-void exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
+ * default step (tests halve it).  Returns 0, or -1 (nothing allocated)
+ * if the run would need more than EXPOSE_MAX_STEPS steps. */
+int exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
 		   double dmax, double step_scale);
 void exposure_free(struct exposure *e);
 /* Relative intensity in the column for PAC M (nz values). */

@@ -16,6 +16,7 @@
 #include "bleach.h"
 #include "util.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,8 +27,8 @@
  * down, and the standing-wave peaks can grow on the way. */
 #define EXPOSE_IMAX_MARGIN 2.0
 
-void exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
-		   double dmax, double step_scale)
+int exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
+		  double dmax, double step_scale)
 {
 	memset(e, 0, sizeof *e);
 	thinfilm_init(&e->tf, in, nz);
@@ -57,9 +58,13 @@ void exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
 	if (rate * dmax / EXPOSE_STEP > steps)
 		steps = ceil(rate * dmax / EXPOSE_STEP);
 	steps = ceil(steps / step_scale);
-	if (!(steps < 1e8))
-		die("exposure needs more than 1e8 dose steps (C * dose too large)");
+	if (!(steps <= EXPOSE_MAX_STEPS)) {
+		exposure_free(e);
+		memset(e, 0, sizeof *e);
+		return -1;
+	}
 	e->h = dmax > 0 ? dmax / steps : 1;
+	return 0;
 }
 
 void exposure_free(struct exposure *e)
@@ -145,8 +150,7 @@ struct dose_table *dose_table_build(struct exposure *e, double dmax)
 	t->nz = n;
 	t->h = e->h;
 	double nd = dmax > 0 ? ceil(dmax / e->h * (1 - 1e-12)) : 0;
-	if (nd > 1e8)
-		die("dose table of more than 1e8 rows");
+	assert(nd <= EXPOSE_MAX_STEPS);  /* exposure_init checked the steps */
 	t->nd = (int)nd;
 	size_t rows = (size_t)t->nd + 1;
 	t->M = xreallocarray(NULL, rows * (size_t)n, sizeof *t->M);

@@ -166,7 +166,9 @@ int main(int argc, char **argv)
 		 c->nx, c->ny, o.contour, dmax);
 
 	struct exposure *e = &held.e;
-	exposure_init(e, &in, nz, dmax, 1.0);
+	if (exposure_init(e, &in, nz, dmax, 1.0) != 0)
+		die("%s:%ld: dose %g mJ/cm2 with C = %g cm2/mJ needs more than %g exposure steps",
+		    o.input, in.line_dose, in.dose, in.C, EXPOSE_MAX_STEPS);
 	struct dose_table *t = dose_table_build(e, dmax);
 	progress("exposure: %d dose steps of %g mJ/cm2, %d points through %g um, %s",
 		 t->nd, t->h, nz, in.thick,

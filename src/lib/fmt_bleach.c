@@ -259,6 +259,7 @@ static void statement(struct parser *p, char **t, int nt)
 		once(p, S_DOSE, "dose");
 		nargs(p, t, nt, 1, 1, kw);
 		in->dose = number(p, t[1], "dose (mJ/cm2)", 0, BIG_DOSE);
+		in->line_dose = lex_lineno(p->lx);
 	} else if (strcasecmp(kw, "bake") == 0 || strcasecmp(kw, "bake3d") == 0) {
 		once(p, S_BAKE, "bake");
 		if (nt != 3 || strcasecmp(t[1], "diffusion") != 0)

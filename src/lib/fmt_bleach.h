@@ -68,6 +68,7 @@ struct bleach_input {
 	double time;                /* s */
 	int nx, ny, nz;             /* 0 for nx, ny: the contour-file's grid */
 	long line_nz;               /* line of the grid statement (0: default) */
+	long line_dose;             /* line of the dose statement */
 };
 
 /* Reads and checks a bleach input file; dies naming file:line. */

@@ -64,6 +64,7 @@ bad "grid nz 1" "$(edit 's/^grid .*/grid nz 1/')"
 bad "grid nx only" "$(edit 's/^grid .*/grid nx 10 nz 50/')"
 bad "grid nz huge" "$(edit 's/^grid .*/grid nz 1e9/')"
 bad "grid too many points" "$(edit 's/^grid .*/grid nx 10000 ny 10000 nz 1000/')"
+bad "absurd exposure" "$(edit 's/0.010$/1000/; s/^dose .*/dose 1e6/')"
 bad "standingwaves maybe" "$(edit '$a\
 standingwaves maybe')"
 bad "unterminated quote" "$(edit '$a\
