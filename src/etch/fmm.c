@@ -394,6 +394,22 @@ struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 	return f;
 }
 
+int fmm_auto_refine(const struct ratefile *r)
+{
+	const double *v = fmt_rate_values(r);
+	size_t plane = (size_t)r->nx * (size_t)r->ny;
+	double worst = 0;
+	for (int k = 0; k + 1 < r->nz; k++)
+		for (size_t q = 0; q < plane; q++) {
+			double a = v[(size_t)k * plane + q], b = v[(size_t)(k + 1) * plane + q];
+			/* zero rates are never reached: no accuracy to win there */
+			if (a >= FMM_RATE_FLOOR && b >= FMM_RATE_FLOOR)
+				worst = fmax(worst, fabs(log(a / b)));
+		}
+	double n = ceil(worst / FMM_AUTO_LNSTEP - 1e-9);
+	return n < 1 ? 1 : n > FMM_AUTO_MAX ? FMM_AUTO_MAX : (int)n;
+}
+
 void fmm_free(struct fmm *f)
 {
 	if (!f)

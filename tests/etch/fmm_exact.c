@@ -16,7 +16,8 @@
  *     rate-grid nodes 1/10 period apart, which no refinement removes).
  *     The plain solve is within 0.013 s (measured 0.0087, 0.9 of a cell
  *     times dT/dz: the "half a cell off" of a plain solve on a resist
- *     column); z x4 measured 0.00056.
+ *     column); z x4 measured 0.00056.  fmm_auto_refine's factor must
+ *     bring it under a tenth of a cell (0.001 s; dT/dz is about 1 s/um).
  *  3. Sphere from a point, uniform R = 1: |T - r| over 0.5 <= r <= 1.2
  *     must shrink with the grid (h = 0.1 -> 0.05: max error falls by a
  *     factor >= 1.5; measured 1.8 and, off-node, 1.7: a point source
@@ -105,6 +106,8 @@ static void test_plane(void)
 			}
 	CHECK(emax < 1e-12, "plane: node error %g s", emax);
 	CHECK(f->accepted == 11 * 9 * 21, "plane: %ld nodes reached", f->accepted);
+	CHECK(fmm_auto_refine(r) == 1, "plane: automatic refinement %d for a uniform rate",
+	      fmm_auto_refine(r));
 	unsigned long s = 12345;
 	double eq = 0, ed = 0;
 	for (int q = 0; q < 200; q++) {
@@ -175,7 +178,11 @@ static void test_zonly(void)
 			for (int i = 0; i < 3; i++)
 				r->arrays[0].v[fmt_rate_index(r, i, j, k)] =
 					1 / (1 + ZA * cos(ZK * fmt_rate_z(r, k)));
-	double e1 = ztest_error(r, 1, 0), e4 = ztest_error(r, 4, 0);
+	int ra = fmm_auto_refine(r);
+	double e1 = ztest_error(r, 1, 0), e4 = ztest_error(r, 4, 0), ea = ztest_error(r, ra, 0);
+	printf("z-only: automatic refinement x%d: error %.3g s\n", ra, ea);
+	CHECK(ea < 0.1 * 0.01, "z-only: automatic refinement x%d leaves %g s (0.1 cell = 0.001 s)",
+	      ra, ea);
 	double ec = ztest_error(r, 4, 1);
 	printf("z-only: error vs piecewise-linear integral %.3g s (plain), %.3g s (z x4); "
 	       "vs closed form %.3g s\n", e1, e4, ec);
