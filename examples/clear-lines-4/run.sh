@@ -1,0 +1,8 @@
+#!/bin/sh
+# Thesis Figure 9.25: 0.9 x 4 um clear-field lines, Shipley 1470, 10 s.
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 10 -h "$@"

@@ -1,0 +1,10 @@
+#!/bin/sh
+# Thesis Figures 9.27 and 9.29: 0.8 lambda/NA contact with coma 0.4 lambda at field (1,0), Olin Hunt 6512 and Shipley 1470, 30 s.
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+for r in olinhunt6512 shipley1470; do
+	mkdir -p "$out/$r" && cd "$out/$r"
+	sample3D -if "$here/mask.in" -bf "$here/resist-$r.in" -et 30 -h "$@"
+done

@@ -1,0 +1,15 @@
+#!/bin/sh
+# Thesis Figures 9.11-9.18: 0.5 um opaque defect near the corner of a large square, on Shipley 1470, Olin Hunt 6512 and Kodak 820 at 80%, 100% and 120% of their best dose, 30 s.
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+# the aerial image once, then each resist and dose
+splat -q "$here/mask.in"
+for r in "$here"/resist-*.in; do
+	name=$(basename "$r" .in)
+	mkdir -p "$out/$name"
+	cd "$out/$name"
+	sample3D -cf "$out/image.cont" -bf "$r" -et 30 -pt 10 -h -cut y 0 "$@"
+done

@@ -1,0 +1,8 @@
+#!/bin/sh
+# Thesis Figure 9.2: 1.25 um isolated transparent elbow, Olin Hunt 6512, 30 s.
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -pt 10 -h "$@"
