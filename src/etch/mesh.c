@@ -72,16 +72,6 @@ static void node_detach(struct mesh *m, int n, int s)
 		}
 }
 
-static void node_replace_seg(struct mesh *m, int n, int from, int to)
-{
-	struct node *nd = &m->node[n];
-	for (int i = 0; i < nd->nseg; i++)
-		if (nd->seg[i] == from) {
-			nd->seg[i] = to;
-			return;
-		}
-}
-
 static int seg_other(const struct mesh *m, int s, int n)
 {
 	const struct segment *sg = &m->seg[s];
