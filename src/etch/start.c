@@ -60,8 +60,9 @@ void start_flat(struct mesh *m, const struct rfield *f, double seg)
 			curx[i] = x;
 		}
 		if (j > 0) {
-			/* zip the strip between the rows: advance along the row
-			 * whose next node comes first in x; triangles clockwise
+			/* zip the strip between the rows, each triangle closing
+			 * with the shorter of the two possible diagonals (no
+			 * segment longer than S_ideal); triangles clockwise
 			 * seen from above, so their normals point down */
 			int i = 0, k = 0;
 			while (i < nprev - 1 || k < n - 1) {
@@ -70,8 +71,10 @@ void start_flat(struct mesh *m, const struct rfield *f, double seg)
 					along_prev = 0;
 				else if (k == n - 1)
 					along_prev = 1;
-				else
-					along_prev = prevx[i + 1] <= curx[k + 1] + ROW_X_TOL;
+				else    /* the shorter new diagonal (rows are
+					 * equally far apart, so compare x) */
+					along_prev = fabs(prevx[i + 1] - curx[k]) <=
+						fabs(curx[k + 1] - prevx[i]) + ROW_X_TOL;
 				if (along_prev) {
 					mesh_add_triangle(m, prev[i], cur[k], prev[i + 1]);
 					i++;

@@ -4,7 +4,8 @@
  * and positions worked out by hand:
  *   - the checker finds planted faults (a broken back-link, a flipped
  *     triangle, a duplicate segment): it can fail;
- *   - the flat start is clean and its border lies on the walls;
+ *   - the flat start is clean, no segment is longer than S_ideal, and its
+ *     border lies on the walls;
  *   - splitting a segment adds 1 node, 3 segments, 2 triangles;
  *   - merging: a wall node is never deleted (Figure 8.5); the base of a
  *     3-triangle pyramid is never merged (Figure 8.8) while its apex may
@@ -68,6 +69,9 @@ static void test_flat_split(const struct rfield *f)
 	struct mesh *m = mesh_new();
 	start_flat(m, f, 0.25);
 	clean(m, "flat");
+	for (size_t k = 0; k < m->nseg; k++)
+		CHECK(mesh_seg_length(m, (int)k) <= 0.25 * (1 + 1e-9),
+		      "flat start segment %zu of length %g > S_ideal", k, mesh_seg_length(m, (int)k));
 	for (size_t s = 0; s < m->nseg; s++) {
 		if (m->seg[s].t[1] >= 0)
 			continue;
