@@ -21,3 +21,6 @@ for c in $GOLDEN_CASES; do
 	done
 	echo "regenerated tests/golden/$c"
 done
+# the plot programs' own golden PostScript and SVG (tests/<prog>/golden/):
+# their tests rewrite the files when REGEN=1
+REGEN=1 TESTS=007-golden sh "$TOP/tests/run.sh" "$BUILD" | tail -n 1
