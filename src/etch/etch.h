@@ -42,6 +42,8 @@ struct etch_opts {
 	int cut_axis;           /* -1 none, 0 x, 1 y */
 	double cut_value;
 	enum method method;
+	int refine[3];          /* -method fmm: cell subdivisions in x, y, z */
+	int refine_auto;        /* -refine auto: z factor from the rate array */
 	const char *out3d, *out2d, *outcut;
 	const char *input;
 };

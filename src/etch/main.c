@@ -20,6 +20,7 @@ static const char usage[] =
 	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop] [-cut x|y value] [-seed x y z] [-method ray|fmm]\n"
+	"            [-refine n|nx ny nz|auto]\n"
 	"            [-o curves.plot] [-check] [-q] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
@@ -37,6 +38,9 @@ static const char usage[] =
 	"                   to curves.cut\n"
 	"  -seed x y z      start from a seed point instead of the resist top\n"
 	"  -method ray|fmm  ray-string (default) or fast-marching engine\n"
+	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
+	"                   n times in z (or nx, ny, nz in x, y, z); auto picks z\n"
+	"                   from the standing waves (default 1: no refinement)\n"
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -check           check the mesh's consistency after every step\n"
@@ -57,6 +61,37 @@ static int parse3(struct args *a, const char *opt, double v[3])
 	return 1;
 }
 
+/* -refine n | nx ny nz | auto (FMM_REFINE_MAX per axis) */
+enum { FMM_REFINE_MAX = 64 };
+static void parse_refine(struct args *a, struct etch_opts *o)
+{
+	char **v = a->argv + a->i + 1;
+	int left = a->argc - a->i - 1;
+	long n[3];
+	if (left >= 1 && strcmp(v[0], "auto") == 0) {
+		o->refine_auto = 1;
+		a->i += 2;
+		return;
+	}
+	if (left >= 3 && num_parse_count(v[0], 1, FMM_REFINE_MAX, &n[0]) &&
+	    num_parse_count(v[1], 1, FMM_REFINE_MAX, &n[1]) &&
+	    num_parse_count(v[2], 1, FMM_REFINE_MAX, &n[2])) {
+		for (int d = 0; d < 3; d++)
+			o->refine[d] = (int)n[d];
+		a->i += 4;
+		return;
+	}
+	if (left >= 1 && num_parse_count(v[0], 1, FMM_REFINE_MAX, &n[0])) {
+		o->refine[0] = o->refine[1] = 1;
+		o->refine[2] = (int)n[0];
+		a->i += 2;
+		return;
+	}
+	args_error(a, "option -refine needs auto, n or nx ny nz (whole numbers from 1 to %d)",
+		   FMM_REFINE_MAX);
+	a->i = a->argc;
+}
+
 static void parse_options(int argc, char **argv, struct etch_opts *o)
 {
 	struct args a;
@@ -68,6 +103,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->rl = ETCH_RL;
 	o->clip_every = ETCH_CLIP;
 	o->cut_axis = -1;
+	o->refine[0] = o->refine[1] = o->refine[2] = 1;
 	o->out3d = "curves.plot";
 	const char *method = "ray", *cutaxis = NULL;
 	while (a.i < argc) {
@@ -100,6 +136,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->quiet = 1;
 		else if (parse3(&a, "-seed", o->seedp))
 			o->seed = 1;
+		else if (strcmp(s, "-refine") == 0)
+			parse_refine(&a, o);
 		else if (strcmp(s, "-cut") == 0) {
 			if (a.i + 2 >= argc || !num_parse(argv[a.i + 2], &o->cut_value)) {
 				args_error(&a, "option -cut needs x or y and a number");
@@ -136,6 +174,9 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		o->method = METHOD_FMM;
 	else
 		args_error(&a, "-method must be ray or fmm, not %.40s", method);
+	if ((o->refine_auto || o->refine[0] * o->refine[1] * o->refine[2] > 1) &&
+	    o->method != METHOD_FMM)
+		args_error(&a, "-refine goes with -method fmm");
 	if (cutaxis) {
 		if (strcmp(cutaxis, "x") == 0)
 			o->cut_axis = 0;
@@ -190,11 +231,17 @@ static void check_inside(const struct rfield *f, const struct etch_opts *o)
 	}
 }
 
-/* The fast-marching engine (fmm.h, written separately): arrival times on
- * the grid, isosurfaces at the print times.  It has no -cut output yet. */
-static void run_fmm(const struct ratefile *r, const struct etch_opts *o)
+/* The fast-marching engine (fmm.h): arrival times on the (refined) rate
+ * grid, isosurfaces at the print times, and the same curves.cut as the
+ * ray-string engine. */
+static void run_fmm(const struct ratefile *r, const struct rfield *f,
+		    const struct etch_opts *o)
 {
-	struct fmm *fm = o->seed ? fmm_solve_points(r, NULL, o->seedp, 1) : fmm_solve(r, NULL);
+	int refine[3] = {o->refine[0], o->refine[1], o->refine[2]};
+	if (o->refine_auto)
+		refine[2] = fmm_auto_refine(r);
+	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, o->seedp, 1)
+				 : fmm_solve(r, refine);
 	int n = 0;
 	double *times = NULL;
 	size_t cap = 0;
@@ -208,9 +255,20 @@ static void run_fmm(const struct ratefile *r, const struct etch_opts *o)
 			break;
 	}
 	fmm_write_curves(fm, times, n, o->out3d, o->out2d);
+	if (o->cut_axis >= 0 && o->outcut) {
+		/* bounds as the ray-string cut: the other axis' range, then z */
+		int other = 1 - o->cut_axis;
+		double bc[4] = {f->lo[other], f->hi[other], f->lo[2], f->hi[2]};
+		struct plot_file *pf = fmt_plot_new(2);
+		for (int k = 0; k < n; k++)
+			fmm_cut(fm, times[k], o->cut_axis, o->cut_value, pf, bc);
+		fmt_plot_write(o->outcut, pf);
+		fmt_plot_free(pf);
+	}
 	if (!o->quiet)
-		fprintf(stderr, "%s: fast marching: %ld grid nodes reached, %d sets written\n",
-			util_prog(), fm->accepted, n);
+		fprintf(stderr, "%s: fast marching: refinement %d x %d x %d%s, %ld grid nodes "
+			"reached, %d sets written\n", util_prog(), refine[0], refine[1],
+			refine[2], o->refine_auto ? " (auto)" : "", fm->accepted, n);
 	free(times);
 	fmm_free(fm);
 }
@@ -226,7 +284,7 @@ int main(int argc, char **argv)
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);
 	if (o.method == METHOD_FMM) {
-		run_fmm(r, &o);
+		run_fmm(r, &f, &o);
 	} else {
 		struct etch_stats st = {0};
 		struct mesh *m = etch_run(&f, &o, &st);
