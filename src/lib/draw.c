@@ -7,6 +7,7 @@
 #include "util.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -161,6 +162,24 @@ void draw_marker(struct draw *d, int type, double x, double y, double size)
 		draw_segment(d, x - r, y + r, x + r, y - r);
 		d->linetype = lt;
 	}
+}
+
+void draw_print_coord(FILE *f, double v)
+{
+	char buf[40];
+	double r = round(v * 100) / 100;
+	if (fabs(r) < 0.005)
+		r = 0;
+	snprintf(buf, sizeof buf, "%.2f", r);
+	char *dot = strchr(buf, '.');
+	if (dot) {
+		char *e = buf + strlen(buf) - 1;
+		while (e > dot && *e == '0')
+			*e-- = '\0';
+		if (e == dot)
+			*e = '\0';
+	}
+	fputs(buf, f);
 }
 
 int draw_dash(int linetype, double dash[6])

@@ -18,6 +18,8 @@
 #ifndef S3D_DRAW_H
 #define S3D_DRAW_H
 
+#include <stdio.h>
+
 #define DRAW_PAGE_W 612.0
 #define DRAW_PAGE_H 792.0
 #define DRAW_NOFILL (-1.0)
@@ -83,6 +85,11 @@ struct draw_ps_opts {
 void draw_write_ps(const struct draw *d, const char *path, const struct draw_ps_opts *o);
 /* SVG: pages stacked top to bottom in one picture. */
 void draw_write_svg(const struct draw *d, const char *path);
+
+/* Prints a coordinate for the PostScript and SVG writers: rounded to
+ * 0.01 pt, trailing zeros dropped, never "-0", so output is the same
+ * everywhere. */
+void draw_print_coord(FILE *f, double v);
 
 /* Dash pattern of a line type: fills dash[] (points), returns its length. */
 int draw_dash(int linetype, double dash[6]);

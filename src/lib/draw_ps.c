@@ -11,24 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-/* A coordinate rounded to 0.01 pt, trailing zeros dropped, no "-0". */
-static void pnum(FILE *f, double v)
-{
-	char buf[40];
-	double r = round(v * 100) / 100;
-	if (r == 0 || fabs(r) < 0.005)
-		r = 0;
-	snprintf(buf, sizeof buf, "%.2f", r);
-	char *dot = strchr(buf, '.');
-	if (dot) {
-		char *e = buf + strlen(buf) - 1;
-		while (e > dot && *e == '0')
-			*e-- = '\0';
-		if (e == dot)
-			*e = '\0';
-	}
-	fputs(buf, f);
-}
+#define pnum draw_print_coord
 
 static void ps_string(FILE *f, const char *s)
 {

@@ -11,23 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static void snum(FILE *f, double v)
-{
-	char buf[40];
-	double r = round(v * 100) / 100;
-	if (fabs(r) < 0.005)
-		r = 0;
-	snprintf(buf, sizeof buf, "%.2f", r);
-	char *dot = strchr(buf, '.');
-	if (dot) {
-		char *e = buf + strlen(buf) - 1;
-		while (e > dot && *e == '0')
-			*e-- = '\0';
-		if (e == dot)
-			*e = '\0';
-	}
-	fputs(buf, f);
-}
+#define snum draw_print_coord
 
 static void gray_color(FILE *f, double g)
 {
