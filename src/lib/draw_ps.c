@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define pnum draw_print_coord
 
 static void ps_string(FILE *f, const char *s)
 {
@@ -37,18 +36,18 @@ static void set_style(FILE *f, const struct draw_item *it, int *cur_lt,
 		for (int i = 0; i < n; i++) {
 			if (i)
 				fputc(' ', f);
-			pnum(f, dash[i]);
+			draw_print_coord(f, dash[i]);
 		}
 		fputs("] 0 setdash\n", f);
 		*cur_lt = it->linetype;
 	}
 	if (it->width != *cur_w) {
-		pnum(f, it->width);
+		draw_print_coord(f, it->width);
 		fputs(" setlinewidth\n", f);
 		*cur_w = it->width;
 	}
 	if (it->gray != *cur_g) {
-		pnum(f, it->gray);
+		draw_print_coord(f, it->gray);
 		fputs(" setgray\n", f);
 		*cur_g = it->gray;
 	}
@@ -57,9 +56,9 @@ static void set_style(FILE *f, const struct draw_item *it, int *cur_lt,
 static void path(FILE *f, const struct draw_item *it)
 {
 	for (int i = 0; i < it->n; i++) {
-		pnum(f, it->xy[2 * i]);
+		draw_print_coord(f, it->xy[2 * i]);
 		fputc(' ', f);
-		pnum(f, it->xy[2 * i + 1]);
+		draw_print_coord(f, it->xy[2 * i + 1]);
 		fputs(i == 0 ? " m" : " l", f);
 		fputc((i % 6 == 5 || i == it->n - 1) ? '\n' : ' ', f);
 	}
@@ -105,15 +104,15 @@ void draw_write_ps(const struct draw *d, const char *path_name, const struct dra
 		fputs("save\n", f);
 		if (land) {
 			/* the drawing's page (w x h) is laid on its side */
-			pnum(f, DRAW_PAGE_W);
+			draw_print_coord(f, DRAW_PAGE_W);
 			fputs(" 0 translate 90 rotate\n", f);
 		}
 		if (scale != 1.0) {
 			double cw = land ? DRAW_PAGE_H : DRAW_PAGE_W;
 			double ch = land ? DRAW_PAGE_W : DRAW_PAGE_H;
-			pnum(f, cw / 2 * (1 - scale));
+			draw_print_coord(f, cw / 2 * (1 - scale));
 			fputc(' ', f);
-			pnum(f, ch / 2 * (1 - scale));
+			draw_print_coord(f, ch / 2 * (1 - scale));
 			fputs(" translate ", f);
 			fprintf(f, "%.4f dup scale\n", scale);
 		}
@@ -132,7 +131,7 @@ void draw_write_ps(const struct draw *d, const char *path_name, const struct dra
 				fputs("closepath", f);
 				if (e->fill >= 0) {
 					fputc(' ', f);
-					pnum(f, e->fill);
+					draw_print_coord(f, e->fill);
 					fputs(" F", f);
 				}
 				if (e->linetype) {
@@ -147,13 +146,13 @@ void draw_write_ps(const struct draw *d, const char *path_name, const struct dra
 				set_style(f, e, &lt, &w, &g);
 				ps_string(f, e->text);
 				fputc(' ', f);
-				pnum(f, e->xy[0]);
+				draw_print_coord(f, e->xy[0]);
 				fputc(' ', f);
-				pnum(f, e->xy[1]);
+				draw_print_coord(f, e->xy[1]);
 				fputc(' ', f);
-				pnum(f, e->size);
+				draw_print_coord(f, e->size);
 				fputc(' ', f);
-				pnum(f, e->angle);
+				draw_print_coord(f, e->angle);
 				fprintf(f, " %d %d T\n", e->halign, e->valign);
 				break;
 			case DRAW_CLIP:
@@ -164,10 +163,10 @@ void draw_write_ps(const struct draw *d, const char *path_name, const struct dra
 					lt = -1, w = -1, g = -1;
 				}
 				fputs("gsave newpath ", f);
-				pnum(f, e->xy[0]); fputc(' ', f);
-				pnum(f, e->xy[1]); fputc(' ', f);
-				pnum(f, e->xy[2] - e->xy[0]); fputc(' ', f);
-				pnum(f, e->xy[3] - e->xy[1]);
+				draw_print_coord(f, e->xy[0]); fputc(' ', f);
+				draw_print_coord(f, e->xy[1]); fputc(' ', f);
+				draw_print_coord(f, e->xy[2] - e->xy[0]); fputc(' ', f);
+				draw_print_coord(f, e->xy[3] - e->xy[1]);
 				fputs(" rectclip\n", f);
 				clipped = 1;
 				break;

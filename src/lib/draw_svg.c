@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define snum draw_print_coord
 
 static void gray_color(FILE *f, double g)
 {
@@ -28,7 +27,7 @@ static void stroke_attrs(FILE *f, const struct draw_item *e)
 	fputs(" stroke=\"", f);
 	gray_color(f, e->gray);
 	fputs("\" stroke-width=\"", f);
-	snum(f, e->width);
+	draw_print_coord(f, e->width);
 	fputc('"', f);
 	double dash[6];
 	int n = draw_dash(e->linetype, dash);
@@ -37,7 +36,7 @@ static void stroke_attrs(FILE *f, const struct draw_item *e)
 		for (int i = 0; i < n; i++) {
 			if (i)
 				fputc(' ', f);
-			snum(f, dash[i]);
+			draw_print_coord(f, dash[i]);
 		}
 		fputc('"', f);
 	}
@@ -49,9 +48,9 @@ static void points(FILE *f, const struct draw_item *e, double yoff, double h)
 	for (int i = 0; i < e->n; i++) {
 		if (i)
 			fputc(' ', f);
-		snum(f, e->xy[2 * i]);
+		draw_print_coord(f, e->xy[2 * i]);
 		fputc(',', f);
-		snum(f, yoff + h - e->xy[2 * i + 1]);
+		draw_print_coord(f, yoff + h - e->xy[2 * i + 1]);
 	}
 	fputc('"', f);
 }
@@ -114,23 +113,23 @@ void draw_write_svg(const struct draw *d, const char *path)
 			/* the PostScript places the baseline at -0.36 (1 + va) size */
 			double dy = e->size * 0.36 * (1 + e->valign);
 			fputs("<text x=\"", f);
-			snum(f, x);
+			draw_print_coord(f, x);
 			fputs("\" y=\"", f);
-			snum(f, y);
+			draw_print_coord(f, y);
 			fputs("\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"", f);
-			snum(f, e->size);
+			draw_print_coord(f, e->size);
 			fprintf(f, "\" text-anchor=\"%s\" fill=\"", anchor[e->halign + 1]);
 			gray_color(f, e->gray);
 			fputc('"', f);
 			if (e->angle != 0 || dy != 0) {
 				fputs(" transform=\"rotate(", f);
-				snum(f, -e->angle);
+				draw_print_coord(f, -e->angle);
 				fputc(' ', f);
-				snum(f, x);
+				draw_print_coord(f, x);
 				fputc(' ', f);
-				snum(f, y);
+				draw_print_coord(f, y);
 				fputs(") translate(0 ", f);
-				snum(f, dy);
+				draw_print_coord(f, dy);
 				fputs(")\"", f);
 			}
 			fputc('>', f);
@@ -143,13 +142,13 @@ void draw_write_svg(const struct draw *d, const char *path)
 				fputs("</g>\n", f);
 			clipid++;
 			fprintf(f, "<clipPath id=\"c%d\"><rect x=\"", clipid);
-			snum(f, e->xy[0]);
+			draw_print_coord(f, e->xy[0]);
 			fputs("\" y=\"", f);
-			snum(f, yoff + H - e->xy[3]);
+			draw_print_coord(f, yoff + H - e->xy[3]);
 			fputs("\" width=\"", f);
-			snum(f, e->xy[2] - e->xy[0]);
+			draw_print_coord(f, e->xy[2] - e->xy[0]);
 			fputs("\" height=\"", f);
-			snum(f, e->xy[3] - e->xy[1]);
+			draw_print_coord(f, e->xy[3] - e->xy[1]);
 			fprintf(f, "\"/></clipPath>\n<g clip-path=\"url(#c%d)\">\n", clipid);
 			inclip = 1;
 			break;
