@@ -2,7 +2,7 @@
  * etch.h - the ray-string development engine (thesis chapters 7 and 8):
  * options, statistics, and the steps of one simulation, each in its own
  * file: start.c (initial surface), advance.c (ray advance), modify.c
- * (cutting and merging), clip.c (clipping), deloop.c (placeholder),
+ * (cutting and merging), clip.c (clipping), deloop.c (delooping),
  * output.c (plot files) and run.c (the time loop of thesis 8.3).
  */
 #ifndef ETCH_ETCH_H
@@ -26,6 +26,11 @@
 
 enum method { METHOD_RAY, METHOD_FMM };
 
+/* Seed points accepted (-seed repeated; thesis Figure 8.13 uses two). */
+enum { ETCH_MAX_SEEDS = 16 };
+
+struct ratefile;
+
 struct etch_opts {
 	double et, pt, dt;      /* s; pt <= 0: only the end; dt <= 0: default */
 	double seg;             /* S_ideal, um; <= 0: default */
@@ -34,11 +39,13 @@ struct etch_opts {
 	int linear;             /* linear instead of arc interpolation */
 	int euler;              /* the thesis' first-order step [6.7] + [A.33] */
 	long clip_every;
-	int deloop;
+	int deloop;             /* deloop at every print time (thesis 8.4.3) */
+	long deloop_every;      /* > 0: also every this many steps */
+	const struct ratefile *rate;    /* the rate array, for deloop's classifier */
 	int check;              /* run mesh_check after every step */
 	int quiet;
-	int seed;               /* start from a seed point */
-	double seedp[3];
+	int seed;               /* number of seed points; 0: the resist top */
+	double seedp[ETCH_MAX_SEEDS][3];
 	int cut_axis;           /* -1 none, 0 x, 1 y */
 	double cut_value;
 	enum method method;
@@ -55,6 +62,8 @@ struct etch_stats {
 	long steps, substeps, halvings;
 	long cuts, merges, refused, clips, clipped_tris, stopped;
 	long max_nodes, max_tris;
+	long deloops, loops, looped_tris, crossings_left;   /* deloop.c */
+	double deloop_s;        /* processor time spent delooping, s */
 };
 
 /* start.c: the flat resist top (a regular triangulation of z = zmax with
@@ -77,8 +86,7 @@ void interp_node(const struct node *a, const struct node *b, int linear,
 /* clip.c: clipping against the six faces of the box (thesis 8.4.2). */
 void clip_mesh(struct mesh *m, const struct rfield *f, struct etch_stats *st);
 
-/* deloop.c: delooping (thesis 8.4.3) - a later issue. */
-long deloop_mesh(struct mesh *m);
+/* deloop.c: delooping (thesis 8.4.3); see deloop.h. */
 
 /* output.c */
 struct etch_out;

@@ -19,7 +19,7 @@
 static const char usage[] =
 	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
-	"            [-deloop] [-cut x|y value] [-seed x y z] [-method ray|fmm]\n"
+	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
 	"            [-o curves.plot] [-check] [-q] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
@@ -33,10 +33,11 @@ static const char usage[] =
 	"  -linear          place new nodes by linear, not arc, interpolation\n"
 	"  -euler           the thesis' first-order ray step instead of Runge-Kutta\n"
 	"  -clip n          clip the mesh every n steps (default 10)\n"
-	"  -deloop          remove loops (not implemented yet: accepted, no effect)\n"
+	"  -deloop [n]      remove loops at every print time (and every n steps)\n"
 	"  -cut x|y value   also write the profile in the plane x (y) = value\n"
 	"                   to curves.cut\n"
 	"  -seed x y z      start from a seed point instead of the resist top\n"
+	"                   (repeat for several, at most 16)\n"
 	"  -method ray|fmm  ray-string (default) or fast-marching engine\n"
 	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
 	"                   n times in z (or nx, ny, nz in x, y, z); auto picks z\n"
@@ -128,14 +129,29 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->linear = 1;
 		else if (args_flag(&a, "-euler"))
 			o->euler = 1;
-		else if (args_flag(&a, "-deloop"))
+		else if (args_flag(&a, "-deloop")) {
+			/* an optional step count: -deloop n (thesis 8.4.3) */
+			char *end;
+			long n = a.i < argc ? strtol(argv[a.i], &end, 10) : 0;
+			if (a.i < argc && end != argv[a.i] && *end == '\0') {
+				if (n < 1)
+					args_error(&a, "-deloop n needs a positive step count");
+				o->deloop_every = n;
+				a.i++;
+			}
 			o->deloop = 1;
+		}
 		else if (args_flag(&a, "-check"))
 			o->check = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
-		else if (parse3(&a, "-seed", o->seedp))
-			o->seed = 1;
+		else if (parse3(&a, "-seed", o->seedp[o->seed < ETCH_MAX_SEEDS ? o->seed
+							       : ETCH_MAX_SEEDS - 1])) {
+			if (o->seed < ETCH_MAX_SEEDS)
+				o->seed++;
+			else
+				args_error(&a, "more than %d -seed points", ETCH_MAX_SEEDS);
+		}
 		else if (strcmp(s, "-refine") == 0)
 			parse_refine(&a, o);
 		else if (strcmp(s, "-cut") == 0) {
@@ -219,10 +235,11 @@ static _Noreturn void usage_die(const char *fmt, ...)
 
 static void check_inside(const struct rfield *f, const struct etch_opts *o)
 {
-	for (int d = 0; d < 3; d++)
-		if (o->seed && (o->seedp[d] < f->lo[d] || o->seedp[d] > f->hi[d]))
-			usage_die("-seed point outside the rate box (%c from %g to %g)",
-				  "xyz"[d], f->lo[d], f->hi[d]);
+	for (int k = 0; k < o->seed; k++)
+		for (int d = 0; d < 3; d++)
+			if (o->seedp[k][d] < f->lo[d] || o->seedp[k][d] > f->hi[d])
+				usage_die("-seed point outside the rate box (%c from %g to %g)",
+					  "xyz"[d], f->lo[d], f->hi[d]);
 	if (o->cut_axis >= 0) {
 		int d = o->cut_axis;
 		if (o->cut_value < f->lo[d] || o->cut_value > f->hi[d])
@@ -240,7 +257,7 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 	int refine[3] = {o->refine[0], o->refine[1], o->refine[2]};
 	if (o->refine_auto)
 		refine[2] = fmm_auto_refine(r);
-	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, o->seedp, 1)
+	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, &o->seedp[0][0], o->seed)
 				 : fmm_solve(r, refine);
 	int n = 0;
 	double *times = NULL;
@@ -287,6 +304,7 @@ int main(int argc, char **argv)
 		run_fmm(r, &f, &o);
 	} else {
 		struct etch_stats st = {0};
+		o.rate = r;
 		struct mesh *m = etch_run(&f, &o, &st);
 		if (!o.quiet) {
 			fprintf(stderr, "%s: done: %g s in %ld steps of %g s (%s); S_ideal %g um\n",
@@ -300,10 +318,14 @@ int main(int argc, char **argv)
 				"(largest %ld nodes, %ld triangles)\n", util_prog(),
 				m->live_node, m->live_seg, m->live_tri, st.max_nodes, st.max_tris);
 			fprintf(stderr, "%s: %ld cuts, %ld merges (%ld refused), %ld clips removing "
-				"%ld triangles, %ld nodes stopped at the substrate%s\n",
+				"%ld triangles, %ld nodes stopped at the substrate\n",
 				util_prog(), st.cuts, st.merges, st.refused, st.clips,
-				st.clipped_tris, st.stopped,
-				o.deloop ? "; -deloop: not implemented, loops left in place" : "");
+				st.clipped_tris, st.stopped);
+			if (o.deloop)
+				fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
+					"triangles) in %.3g s; %ld crossings left\n", util_prog(),
+					st.deloops, st.loops, st.looped_tris, st.deloop_s,
+					st.crossings_left);
 		}
 		mesh_free(m);
 	}

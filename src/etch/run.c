@@ -1,7 +1,8 @@
 /*
  * run.c - the time loop of the ray-string algorithm (thesis 8.3): from the
  * initial surface, repeat [I] advance every node along its ray, [II] cut
- * and merge segments, [III] clip every n steps, [IV] deloop if asked,
+ * and merge segments, [III] clip every n steps, [IV] deloop if asked
+ * (deloop.h: at every print time, and every n steps with -deloop n),
  * until the etch time; write a set of plot curves at every print time.
  *
  * Steps are equal within each print interval and end exactly on the
@@ -12,11 +13,14 @@
  */
 #include "etch.h"
 
+#include "deloop.h"
+#include "fmm.h"
 #include "util.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 double etch_default_seg(const struct rfield *f)
 {
@@ -51,6 +55,19 @@ static void note_size(const struct mesh *m, struct etch_stats *st)
 		st->max_tris = (long)m->live_tri;
 }
 
+static void deloop_now(struct mesh *m, const struct fmm *fm, const struct rfield *f,
+		       double t, struct etch_stats *st)
+{
+	clock_t c0 = clock();
+	struct deloop_report rep;
+	deloop_run(m, fm, f, t, &rep);
+	st->deloops++;
+	st->loops += rep.loops;
+	st->looped_tris += rep.removed_tris;
+	st->crossings_left = rep.left;
+	st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
+}
+
 struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		      struct etch_stats *st)
 {
@@ -59,14 +76,22 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 	st->dt_grad = f->gmax > 0 ? 1 / f->gmax : 0;
 	st->dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
 	struct mesh *m = mesh_new();
-	if (o->seed)
-		start_seed(m, o->seedp);
-	else
+	for (int k = 0; k < o->seed; k++)
+		start_seed(m, o->seedp[k]);
+	if (!o->seed)
 		start_flat(m, f, seg);
 	if (o->check)
 		check(m, 0);
 	note_size(m, st);
 	struct etch_out *out = out_open(o, f);
+	struct fmm *fm = NULL;
+	if (o->deloop) {
+		clock_t c0 = clock();
+		if (!o->rate)
+			die("internal error: -deloop without the rate array");
+		fm = deloop_classifier(o->rate, seg, o->seed ? &o->seedp[0][0] : NULL, o->seed);
+		st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
+	}
 	double t = 0;
 	long since_clip = 0;
 	for (long k = 1;; k++) {
@@ -87,8 +112,9 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 				clip_mesh(m, f, st);
 				since_clip = 0;
 			}
-			if (o->deloop)
-				deloop_mesh(m);
+			if (fm && (i == n || (o->deloop_every > 0 &&
+					      (st->steps + 1) % o->deloop_every == 0)))
+				deloop_now(m, fm, f, i < n ? t + i * (span / n) : tp, st);
 			mesh_compact(m);
 			st->steps++;
 			note_size(m, st);
@@ -104,5 +130,6 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 			break;
 	}
 	out_close(out);
+	fmm_free(fm);
 	return m;
 }

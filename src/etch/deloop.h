@@ -1,0 +1,76 @@
+/*
+ * deloop.h - removing the loops of the ray-string mesh (thesis 7.5.3,
+ * 8.4.3, 8.5 and the future-research list of 10.2).
+ *
+ * Where etch fronts converge the mesh passes through itself and the part
+ * behind the other front (already developed resist) forms a loop.  The
+ * pass (deloop.c) works in three stages:
+ *
+ *  1. find every segment that crosses the interior of a triangle it does
+ *     not touch ("pierces"), through a uniform grid of the triangles:
+ *     O(N) work for N triangles of similar size instead of the thesis'
+ *     O(N^2) pair test.  Two triangles intersect exactly when an edge of
+ *     one pierces the other (barring exact degeneracies), so the pierces
+ *     are the self-intersections;
+ *  2. the pierced segments are the ones the intersection curves cross
+ *     (thesis Figure 8.11), so the nodes joined by unpierced segments fall
+ *     into patches bounded by those curves.  Each patch is classified as a
+ *     whole by a volumetric test: the median, over its nodes, of the signed
+ *     distance (T(p) - t) R(p) to the developed surface, T the arrival time
+ *     of the independent fast-marching engine (fmm.h).  A patch whose median
+ *     lies more than a grid cell inside developed resist is a loop.  One
+ *     verdict per patch, from every node of it, so pinwheeling triangles or
+ *     three triangles meeting at a point (where the thesis' motion test
+ *     failed) cannot flip it;
+ *  3. every pierced segment from a kept node to a loop node is cut where it
+ *     crosses the other sheet (pulled back a little towards the kept node,
+ *     see DELOOP_PULLBACK), and every triangle with a loop node is deleted.
+ *     The kept mesh then ends on the intersection curve.
+ */
+#ifndef ETCH_DELOOP_H
+#define ETCH_DELOOP_H
+
+#include "mesh.h"
+
+#include <stddef.h>
+
+struct fmm;
+struct rfield;
+struct ratefile;
+
+/* Segment s crosses triangle t at x, a fraction u of the way from its
+ * node n[0] to its node n[1]. */
+struct deloop_pierce {
+	int s, t;
+	double u;
+	double x[3];
+};
+
+/* Every pierce of m (alive segments and triangles sharing no node),
+ * sorted by segment then triangle.  *out is malloc'd (free it; NULL when
+ * there are none).  Returns the count. */
+size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out);
+
+/* What one pass did. */
+struct deloop_report {
+	long crossings;         /* pierces found */
+	long loops;             /* patches removed */
+	long removed_tris;      /* triangles deleted (before the cuts' halves) */
+	long cuts;              /* segments cut on the intersection curves */
+	long left;              /* pierces between two kept patches (0 if clean) */
+};
+
+/* Deloops m at time t (s), classifying with the arrival times fm and the
+ * rates f.  Returns the number of loops removed.  The mesh stays
+ * consistent (mesh_check); call mesh_compact afterwards. */
+long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+		struct deloop_report *rep);
+
+/* The classifier for a simulation: the fast-marching solution from the
+ * resist top (nseeds = 0) or from the seed points (x y z triples), its
+ * grid refined so that a cell is no larger than about seg (um) across and
+ * the standing waves are resolved (fmm_auto_refine). */
+struct fmm *deloop_classifier(const struct ratefile *r, double seg,
+			      const double *seeds, int nseeds);
+
+#endif
