@@ -48,6 +48,10 @@
 #define DELOOP_MAX_FMM_NODES 4.0e7
 /* Arrival times beyond this are the engine's "never reached". */
 #define UNREACHED_T (0.5 * FMM_UNREACHED)
+/* Passes: the patch pass, then local passes for folds shallower than the
+ * margin, each on the crossings the previous left; two or three suffice
+ * in every case tested, the cap bounds the work. */
+#define DELOOP_PASSES 6
 
 /* Barycentric slack of the crossing test: rounding of the determinants
  * of nodes of order 1 um apart is ~1e-16 relative; this is far above it
@@ -288,15 +292,28 @@ static int cmp_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
-		struct deloop_report *rep)
+/* Signed distance (um) of node i to the fast-marching front at time t:
+ * negative inside developed resist.  *vote 0 for nodes on the top or the
+ * substrate: those are developed surface wherever a node lies on them
+ * (T < t there), so they cast no vote. */
+static double node_dist(const struct mesh *m, int i, const struct fmm *fm,
+			const struct rfield *f, double t, int *vote)
 {
-	memset(rep, 0, sizeof *rep);
-	struct deloop_pierce *pc;
-	size_t np = deloop_pierces(m, &pc);
-	rep->crossings = (long)np;
-	if (np == 0)
+	const struct node *nd = &m->node[i];
+	*vote = nd->alive && !(nd->flags & (ON_TOP | ON_SUB));
+	if (!*vote)
 		return 0;
+	double tp = fmm_time_at(fm, nd->p);
+	if (tp >= UNREACHED_T)
+		return HUGE_VAL;
+	return (tp - t) * rfield_eval(f, nd->p, NULL);
+}
+
+/* The patch verdict (deloop.h, stage 2): which nodes are in loops. */
+static unsigned char *classify_patches(const struct mesh *m, const struct deloop_pierce *pc,
+				       size_t np, const struct fmm *fm, const struct rfield *f,
+				       double t, struct deloop_report *rep)
+{
 	size_t nn = m->nnode;
 	/* patches: nodes joined by segments no other sheet crosses */
 	unsigned char *cut = xcalloc(m->nseg, 1);
@@ -311,36 +328,26 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			if (a != b)
 				up[a > b ? a : b] = a < b ? a : b;
 		}
-	/* each patch's signed distances (um, negative inside developed
-	 * resist), grouped by patch through a counting sort */
+	free(cut);
+	/* each patch's signed distances, grouped by a counting sort */
 	size_t *first = xcalloc(nn + 1, sizeof *first);
 	double *dist = xreallocarray(NULL, nn + 1, sizeof *dist);
 	int *root = xreallocarray(NULL, nn + 1, sizeof *root);
 	for (size_t i = 0; i < nn; i++) {
-		root[i] = -1;
-		const struct node *nd = &m->node[i];
-		/* the top and the substrate are developed surface wherever a
-		 * node lies on them (T < t there): they cast no vote */
-		if (!nd->alive || (nd->flags & (ON_TOP | ON_SUB)))
-			continue;
-		root[i] = find(up, (int)i);
-		first[root[i] + 1]++;
+		int vote;
+		dist[i] = node_dist(m, (int)i, fm, f, t, &vote);
+		root[i] = vote ? find(up, (int)i) : -1;
+		if (vote)
+			first[root[i] + 1]++;
 	}
 	for (size_t i = 0; i < nn; i++)
 		first[i + 1] += first[i];
 	size_t *fill = xreallocarray(NULL, nn + 1, sizeof *fill);
+	double *sorted = xreallocarray(NULL, nn + 1, sizeof *sorted);
 	memcpy(fill, first, (nn + 1) * sizeof *fill);
-	for (size_t i = 0; i < nn; i++) {
-		if (root[i] < 0)
-			continue;
-		const double *p = m->node[i].p;
-		double tp = fmm_time_at(fm, p), d;
-		if (tp >= UNREACHED_T)
-			d = HUGE_VAL;
-		else
-			d = (tp - t) * rfield_eval(f, p, NULL);
-		dist[fill[root[i]]++] = d;
-	}
+	for (size_t i = 0; i < nn; i++)
+		if (root[i] >= 0)
+			sorted[fill[root[i]]++] = dist[i];
 	free(fill);
 	double cell = fmax(fm->h[0], fmax(fm->h[1], fm->h[2]));
 	double tol = DELOOP_TOL_CELLS * cell;
@@ -349,9 +356,9 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 		size_t k = first[r + 1] - first[r];
 		if (k == 0)
 			continue;
-		qsort(dist + first[r], k, sizeof *dist, cmp_double);
-		double med = k & 1 ? dist[first[r] + k / 2]
-			: 0.5 * (dist[first[r] + k / 2 - 1] + dist[first[r] + k / 2]);
+		double *v = sorted + first[r];
+		qsort(v, k, sizeof *v, cmp_double);
+		double med = k & 1 ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
 		if (med < -tol) {
 			loop[r] = 1;
 			rep->loops++;
@@ -359,6 +366,7 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 	}
 	free(first);
 	free(dist);
+	free(sorted);
 	free(root);
 	unsigned char *gone = xcalloc(nn, 1);  /* per node */
 	for (size_t i = 0; i < nn; i++)
@@ -366,10 +374,41 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			gone[i] = loop[find(up, (int)i)];
 	free(loop);
 	free(up);
-	/* the cuts: on each segment from a kept node to a loop node, at the
-	 * crossing nearest the kept node (decided before any split, as the
-	 * splits add segments and move the arrays) */
-	struct { int s; double u; } *todo = xreallocarray(NULL, np, sizeof *todo);
+	return gone;
+}
+
+/* The fallback for crossings left between two kept patches (a fold no
+ * deeper than the margin, so both sides pass as front): of each crossing
+ * segment the node deeper in developed resist goes.  Such folds lie
+ * within the margin of the true front, so nothing further from it than
+ * the margin is deleted. */
+static unsigned char *classify_local(const struct mesh *m, const struct deloop_pierce *pc,
+				     size_t np, const struct fmm *fm, const struct rfield *f,
+				     double t)
+{
+	unsigned char *gone = xcalloc(m->nnode, 1);
+	for (size_t i = 0; i < np; i++) {
+		if (i > 0 && pc[i].s == pc[i - 1].s)
+			continue;
+		int a = m->seg[pc[i].s].n[0], b = m->seg[pc[i].s].n[1], va, vb;
+		double da = node_dist(m, a, fm, f, t, &va), db = node_dist(m, b, fm, f, t, &vb);
+		if (va && (!vb || da < db))
+			gone[a] = 1;
+		else if (vb)
+			gone[b] = 1;
+	}
+	return gone;
+}
+
+/* Stage 3: cut every crossing segment from a kept node to a gone one at
+ * the crossing nearest the kept node, then delete every triangle with a
+ * gone node. */
+static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_t np,
+			   const unsigned char *gone, struct deloop_report *rep)
+{
+	size_t nn = m->nnode;
+	/* decided before any split, as the splits add segments */
+	struct { int s; double u; } *todo = xreallocarray(NULL, np + 1, sizeof *todo);
 	size_t ntodo = 0;
 	for (size_t i = 0; i < np; ) {
 		size_t j = i;
@@ -386,13 +425,9 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			todo[ntodo].s = pc[i].s;
 			todo[ntodo].u = u;
 			ntodo++;
-		} else if (!g0) {
-			rep->left += (long)(j - i);
 		}
 		i = j;
 	}
-	free(pc);
-	free(cut);
 	for (size_t i = 0; i < ntodo; i++) {
 		int s = todo[i].s;
 		double u = todo[i].u;
@@ -410,7 +445,7 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 		rep->cuts++;
 	}
 	free(todo);
-	/* delete every triangle with a loop node (new nodes are kept) */
+	/* new nodes (index >= nn) are kept */
 	for (size_t tt = 0; tt < m->ntri; tt++) {
 		const struct triangle *tr = &m->tri[tt];
 		if (!tr->alive)
@@ -423,7 +458,28 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			rep->removed_tris++;
 		}
 	}
-	free(gone);
+}
+
+long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+		struct deloop_report *rep)
+{
+	memset(rep, 0, sizeof *rep);
+	for (int pass = 0; pass < DELOOP_PASSES; pass++) {
+		struct deloop_pierce *pc;
+		size_t np = deloop_pierces(m, &pc);
+		if (pass == 0)
+			rep->crossings = (long)np;
+		rep->left = (long)np;
+		if (np == 0)
+			break;
+		unsigned char *gone = pass == 0 ? classify_patches(m, pc, np, fm, f, t, rep)
+			: classify_local(m, pc, np, fm, f, t);
+		/* the next pass recounts: cutting can leave a crossing that
+		 * no pierce of this one showed */
+		cut_and_remove(m, pc, np, gone, rep);
+		free(gone);
+		free(pc);
+	}
 	return rep->loops;
 }
 
