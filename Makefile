@@ -97,10 +97,12 @@ $(BUILD)/tests/%: tests/%.c $(LIB) $$(filter-out %/main.o,$$(patsubst %.c,$(BUIL
 check: all
 	@sh tests/run.sh $(BUILD)
 
+ASAN_VARS = BUILD=build-asan OPT=-O1 \
+	CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+	LDFLAGS="-fsanitize=address,undefined"
 asan:
-	$(MAKE) BUILD=build-asan OPT=-O1 \
-		CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
-		LDFLAGS="-fsanitize=address,undefined" check
+	$(MAKE) -j2 $(ASAN_VARS) all
+	$(MAKE) $(ASAN_VARS) check
 
 bench: all
 	@sh tests/bench/run.sh $(BUILD)
