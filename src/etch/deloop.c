@@ -31,11 +31,16 @@
  * box (a flat front) would otherwise get mostly empty cells. */
 #define GRID_CELLS_PER_TRI 4.0
 /* A patch is a loop when the median of its nodes' signed distances to the
- * fast-marching front is below -DELOOP_TOL_CELLS cells of the classifier's
- * grid: the two engines agree to half a cell in median (the issue's
- * cross-check level, fmm_auto_refine), so a true front patch is never
- * nearer to that than half the margin. */
-#define DELOOP_TOL_CELLS 1.0
+ * fast-marching front is below minus a margin: DELOOP_TOL_SPREAD times the
+ * median |distance| over all the mesh's nodes (most of them are on the
+ * true front, so that is the two engines' typical disagreement on this
+ * mesh, and a true front patch's median is of that size), but at least
+ * DELOOP_TOL_MIN and at most DELOOP_TOL_MAX cells of the classifier's grid
+ * (the engines agree to half a cell in median at the issue's cross-check
+ * level, fmm_auto_refine). */
+#define DELOOP_TOL_SPREAD 4.0
+#define DELOOP_TOL_MIN 0.05
+#define DELOOP_TOL_MAX 1.0
 /* A cut node is placed this fraction of the way back from the crossing
  * towards the kept node: the kept sheets end on chords of the curved
  * intersection curve, and two chords of the same curve, one in each
@@ -57,6 +62,10 @@
  * of nodes of order 1 um apart is ~1e-16 relative; this is far above it
  * and far below any real distance from a triangle's edge. */
 #define BARY_EPS 1e-9
+/* Sine of the angle under which a segment counts as lying in a
+ * triangle's plane: rounding is ~1e-16, real crossings are steeper than
+ * 1e-9 by far. */
+#define PLANE_EPS 1e-9
 
 static double orient(const double *a, const double *b, const double *c, const double *d)
 {
@@ -78,7 +87,23 @@ static int pierce(const double *p, const double *q, const double *a, const doubl
 		  const double *c, double *u)
 {
 	double sp = orient(a, b, c, p), sq = orient(a, b, c, q);
-	if (!((sp >= 0 && sq <= 0) || (sp <= 0 && sq >= 0)) || !(sp != sq))
+	if (!((sp >= 0 && sq <= 0) || (sp <= 0 && sq >= 0)))
+		return 0;
+	/* a segment in the triangle's plane (rows of nodes along a straight
+	 * front, a wall) only touches it: sp - sq = n . (p - q) must be more
+	 * than rounding of the angle between them */
+	double u1[3], v1[3], w1[3], n[3];
+	for (int i = 0; i < 3; i++) {
+		u1[i] = b[i] - a[i];
+		v1[i] = c[i] - a[i];
+		w1[i] = q[i] - p[i];
+	}
+	n[0] = u1[1] * v1[2] - u1[2] * v1[1];
+	n[1] = u1[2] * v1[0] - u1[0] * v1[2];
+	n[2] = u1[0] * v1[1] - u1[1] * v1[0];
+	double scale = sqrt((n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) *
+			    (w1[0] * w1[0] + w1[1] * w1[1] + w1[2] * w1[2]));
+	if (!(fabs(sp - sq) > PLANE_EPS * scale))
 		return 0;
 	/* the e's over their sum are the barycentric coordinates of the
 	 * crossing point: a point on an edge is in both triangles on it even
@@ -343,14 +368,23 @@ static unsigned char *classify_patches(const struct mesh *m, const struct deloop
 	for (size_t i = 0; i < nn; i++)
 		first[i + 1] += first[i];
 	size_t *fill = xreallocarray(NULL, nn + 1, sizeof *fill);
-	double *sorted = xreallocarray(NULL, nn + 1, sizeof *sorted);
+	double *sorted = xreallocarray(NULL, 2 * nn + 1, sizeof *sorted);
 	memcpy(fill, first, (nn + 1) * sizeof *fill);
 	for (size_t i = 0; i < nn; i++)
 		if (root[i] >= 0)
 			sorted[fill[root[i]]++] = dist[i];
 	free(fill);
 	double cell = fmax(fm->h[0], fmax(fm->h[1], fm->h[2]));
-	double tol = DELOOP_TOL_CELLS * cell;
+	size_t nv = first[nn];
+	for (size_t i = 0; i < nv; i++)
+		sorted[nv + i] = fabs(sorted[i]);
+	double spread = 0;
+	if (nv > 0) {
+		qsort(sorted + nv, nv, sizeof *sorted, cmp_double);
+		spread = sorted[nv + nv / 2];
+	}
+	double tol = fmin(fmax(DELOOP_TOL_SPREAD * spread, DELOOP_TOL_MIN * cell),
+			  DELOOP_TOL_MAX * cell);
 	unsigned char *loop = xcalloc(nn, 1);   /* per patch root */
 	for (size_t r = 0; r < nn; r++) {
 		size_t k = first[r + 1] - first[r];
@@ -363,6 +397,7 @@ static unsigned char *classify_patches(const struct mesh *m, const struct deloop
 			loop[r] = 1;
 			rep->loops++;
 		}
+		rep->margin = tol;
 	}
 	free(first);
 	free(dist);
@@ -384,9 +419,10 @@ static unsigned char *classify_patches(const struct mesh *m, const struct deloop
  * the margin is deleted. */
 static unsigned char *classify_local(const struct mesh *m, const struct deloop_pierce *pc,
 				     size_t np, const struct fmm *fm, const struct rfield *f,
-				     double t)
+				     double t, long *folds)
 {
 	unsigned char *gone = xcalloc(m->nnode, 1);
+	(*folds)++;
 	for (size_t i = 0; i < np; i++) {
 		if (i > 0 && pc[i].s == pc[i - 1].s)
 			continue;
@@ -473,7 +509,7 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 		if (np == 0)
 			break;
 		unsigned char *gone = pass == 0 ? classify_patches(m, pc, np, fm, f, t, rep)
-			: classify_local(m, pc, np, fm, f, t);
+			: classify_local(m, pc, np, fm, f, t, &rep->folds);
 		/* the next pass recounts: cutting can leave a crossing that
 		 * no pierce of this one showed */
 		cut_and_remove(m, pc, np, gone, rep);

@@ -55,6 +55,8 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out);
 struct deloop_report {
 	long crossings;         /* pierces found */
 	long loops;             /* patches removed */
+	long folds;             /* local passes needed after the patch pass */
+	double margin;          /* the patch verdict's margin, um */
 	long removed_tris;      /* triangles deleted (before the cuts' halves) */
 	long cuts;              /* segments cut on the intersection curves */
 	long left;              /* pierces between two kept patches (0 if clean) */

@@ -1,0 +1,186 @@
+/*
+ * deloop_util.h - helpers shared by the deloop tests (tests/etch/deloop*.c):
+ * an independent self-intersection counter, areas and volumes of meshes
+ * and of the fast-marching surface, and default etch options.
+ *
+ * The counter does not use deloop.c's grid nor its crossing test: the
+ * triangles are sorted by the low x of their boxes and every segment is
+ * tested, by the Moller-Trumbore ray-triangle algorithm, against the
+ * triangles whose x range meets its own.  A segment counts as crossing a
+ * triangle it does not touch when the crossing point lies inside the
+ * triangle by more than EDGE_MARGIN in barycentric terms and inside the
+ * segment by as much (touching is not intersecting).
+ */
+#include "deloop.h"
+#include "etch.h"
+#include "fmm.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define EDGE_MARGIN 1e-7
+
+struct xbox { double lo, hi; int t; };
+
+static int cmp_xbox(const void *a, const void *b)
+{
+	const struct xbox *p = a, *q = b;
+	return (p->lo > q->lo) - (p->lo < q->lo);
+}
+
+static void sub3(const double *a, const double *b, double *c)
+{
+	c[0] = a[0] - b[0]; c[1] = a[1] - b[1]; c[2] = a[2] - b[2];
+}
+
+static void cross3(const double *a, const double *b, double *c)
+{
+	c[0] = a[1] * b[2] - a[2] * b[1];
+	c[1] = a[2] * b[0] - a[0] * b[2];
+	c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double *a, const double *b)
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Moller-Trumbore: segment p + s (q - p), s in (m, 1 - m), against the
+ * triangle's interior shrunk by m in barycentric coordinates. */
+static int mt_cross(const double *p, const double *q, const double *a, const double *b,
+		    const double *c, double mg)
+{
+	double d[3], e1[3], e2[3], h[3], sv[3], qv[3];
+	sub3(q, p, d);
+	sub3(b, a, e1);
+	sub3(c, a, e2);
+	cross3(d, e2, h);
+	double det = dot3(e1, h);
+	if (fabs(det) < 1e-300)
+		return 0;
+	double inv = 1 / det;
+	sub3(p, a, sv);
+	double u = dot3(sv, h) * inv;
+	if (u < mg || u > 1 - mg)
+		return 0;
+	cross3(sv, e1, qv);
+	double v = dot3(d, qv) * inv;
+	if (v < mg || u + v > 1 - mg)
+		return 0;
+	double s = dot3(e2, qv) * inv;
+	return s > mg && s < 1 - mg;
+}
+
+/* Segment/triangle crossings of m, touching pairs excluded. */
+static inline long crossings_independent(const struct mesh *m)
+{
+	struct xbox *bx = xreallocarray(NULL, m->ntri + 1, sizeof *bx);
+	size_t n = 0;
+	double wmax = 0;
+	for (size_t t = 0; t < m->ntri; t++) {
+		if (!m->tri[t].alive)
+			continue;
+		double lo = INFINITY, hi = -INFINITY;
+		for (int j = 0; j < 3; j++) {
+			lo = fmin(lo, m->node[m->tri[t].n[j]].p[0]);
+			hi = fmax(hi, m->node[m->tri[t].n[j]].p[0]);
+		}
+		bx[n++] = (struct xbox){lo, hi, (int)t};
+		wmax = fmax(wmax, hi - lo);
+	}
+	qsort(bx, n, sizeof *bx, cmp_xbox);
+	long count = 0;
+	for (size_t s = 0; s < m->nseg; s++) {
+		const struct segment *sg = &m->seg[s];
+		if (!sg->alive)
+			continue;
+		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
+		double lo = fmin(p[0], q[0]), hi = fmax(p[0], q[0]);
+		/* first box with low x >= lo - wmax */
+		size_t a = 0, b = n;
+		while (a < b) {
+			size_t mid = (a + b) / 2;
+			if (bx[mid].lo < lo - wmax)
+				a = mid + 1;
+			else
+				b = mid;
+		}
+		for (size_t k = a; k < n && bx[k].lo <= hi; k++) {
+			if (bx[k].hi < lo)
+				continue;
+			const struct triangle *tr = &m->tri[bx[k].t];
+			int touch = 0;
+			for (int j = 0; j < 3; j++)
+				touch |= tr->n[j] == sg->n[0] || tr->n[j] == sg->n[1];
+			if (!touch && mt_cross(p, q, m->node[tr->n[0]].p, m->node[tr->n[1]].p,
+					       m->node[tr->n[2]].p, EDGE_MARGIN))
+				count++;
+		}
+	}
+	free(bx);
+	return count;
+}
+
+/* Area (um^2) of a triangle and its contribution to the developed volume
+ * (um^3): by the divergence theorem with F = (0, 0, z - zmax), which
+ * vanishes on the resist top and is parallel to the side walls, the
+ * volume between the top and a surface oriented towards undeveloped
+ * resist is the sum of (mean z - zmax) times the z component of the
+ * triangle's area vector (exact: z is linear on a triangle). */
+static void tri_area_volume(const double *a, const double *b, const double *c, double zmax,
+			    double *area, double *vol)
+{
+	double u[3], v[3], n[3];
+	sub3(b, a, u);
+	sub3(c, a, v);
+	cross3(u, v, n);
+	*area += 0.5 * sqrt(dot3(n, n));
+	*vol += ((a[2] + b[2] + c[2]) / 3 - zmax) * 0.5 * n[2];
+}
+
+static inline void mesh_area_volume(const struct mesh *m, double zmax, double *area, double *vol)
+{
+	*area = *vol = 0;
+	for (size_t t = 0; t < m->ntri; t++)
+		if (m->tri[t].alive)
+			tri_area_volume(m->node[m->tri[t].n[0]].p, m->node[m->tri[t].n[1]].p,
+					m->node[m->tri[t].n[2]].p, zmax, area, vol);
+}
+
+struct av { double zmax, area, vol; };
+
+static void av_emit(void *ctx, const double tri[9])
+{
+	struct av *s = ctx;
+	tri_area_volume(tri, tri + 3, tri + 6, s->zmax, &s->area, &s->vol);
+}
+
+/* The same for the fast-marching surface T = t (normals towards
+ * undeveloped resist, as the mesh's). */
+static inline void fmm_area_volume(const struct fmm *fm, double t, double *area, double *vol)
+{
+	struct av s = {fm->bounds[5], 0, 0};
+	fmm_surface(fm, t, av_emit, &s);
+	*area = s.area;
+	*vol = s.vol;
+}
+
+static inline struct etch_opts default_opts(double et, double dt, double seg)
+{
+	struct etch_opts o;
+	memset(&o, 0, sizeof o);
+	o.et = et;
+	o.dt = dt;
+	o.seg = seg;
+	o.smax = ETCH_SMAX;
+	o.smin = ETCH_SMIN;
+	o.rl = ETCH_RL;
+	o.clip_every = ETCH_CLIP;
+	o.cut_axis = -1;
+	o.check = 1;
+	o.quiet = 1;
+	return o;
+}
