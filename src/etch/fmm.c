@@ -281,6 +281,7 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], struct s
 		int ref = refine ? refine[d] : 1;
 		if (ref < 1 || ref > FMM_MAX_REFINE)
 			die("fmm: refinement factor %d out of range 1..%d", ref, FMM_MAX_REFINE);
+		f->refine[d] = ref;
 		long nd = (long)(nr[d] - 1) * ref + 1;
 		if (nd > INT32_MAX || (total *= (size_t)nd) > INT32_MAX)
 			die("fmm: refined grid too large (over %ld nodes)", (long)INT32_MAX);

@@ -47,6 +47,7 @@ struct fmm {
 	double h[3];            /* node spacing per axis, um (0 if one node) */
 	double *t;              /* arrival times, s: n[0]*n[1]*n[2], x fastest */
 	long accepted;          /* nodes reached (for reports) */
+	int refine[3];          /* the refinement the grid was solved with */
 };
 
 /* Solves |grad T| R = 1 with T = 0 on the resist top.  refine[d] >= 1
@@ -95,7 +96,11 @@ void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t
  * faces.  For t <= 0 it is the flat resist top.  Returns the count. */
 long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
 
-/* Writes one set per time: path3d in curves.plot form (plot3d(5), every
+/* Writes one set per time: the surfaces are extracted on the rate grid
+ * (every refine[d]-th node of the solution), so refinement sharpens the
+ * arrival times at the rate-grid nodes without multiplying the triangles
+ * written (on the thesis' contact at z x5: 83 MB and 18 s otherwise).
+ * path3d in curves.plot form (plot3d(5), every
  * triangle a closed 4-point curve p1 p2 p3 p1, bounds the rate box),
  * path2d in curves.plot.2D form (the same triangles projected on x-y).
  * Either path may be NULL.  Files are committed atomically. */

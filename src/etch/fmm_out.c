@@ -103,9 +103,36 @@ static void collect(void *ctx, const double tri[9])
 	tr->n++;
 }
 
-void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
+/* The solution sampled at every refine[d]-th node: the rate grid. */
+static struct fmm *coarse_view(const struct fmm *f)
+{
+	struct fmm *c = xcalloc(1, sizeof *c);
+	*c = *f;
+	size_t total = 1;
+	for (int d = 0; d < 3; d++) {
+		int r = f->refine[d] > 0 ? f->refine[d] : 1;
+		c->n[d] = (f->n[d] - 1) / r + 1;
+		c->h[d] = f->h[d] * r;
+		c->refine[d] = 1;
+		total *= (size_t)c->n[d];
+	}
+	c->t = xreallocarray(NULL, total, sizeof *c->t);
+	size_t q = 0;
+	for (int k = 0; k < c->n[2]; k++)
+		for (int j = 0; j < c->n[1]; j++)
+			for (int i = 0; i < c->n[0]; i++) {
+				size_t src = ((size_t)k * (size_t)(f->refine[2] > 0 ? f->refine[2] : 1) * (size_t)f->n[1] +
+					      (size_t)j * (size_t)(f->refine[1] > 0 ? f->refine[1] : 1)) * (size_t)f->n[0] +
+					     (size_t)i * (size_t)(f->refine[0] > 0 ? f->refine[0] : 1);
+				c->t[q++] = f->t[src];
+			}
+	return c;
+}
+
+void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
 		      const char *path3d, const char *path2d)
 {
+	struct fmm *f = coarse_view(fine);
 	struct plot_writer *w3 = path3d ? fmt_plot_open(path3d, 3) : NULL;
 	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
 	struct tris tr = {NULL, 0, 0};
@@ -134,6 +161,8 @@ void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 		}
 	}
 	free(tr.v);
+	free(f->t);
+	free(f);
 	if (w3)
 		fmt_plot_close(w3);
 	if (w2)
