@@ -48,6 +48,12 @@
  * curvature-sized margin.  A tenth of a segment leaves a gap under 0.1
  * S_max between the sheets (well inside the 2-segment and 1% checks). */
 #define DELOOP_PULLBACK 0.1
+/* The classifier's cells may be this many ideal segments across before
+ * its grid is refined laterally: the margin follows the engines' actual
+ * disagreement (DELOOP_TOL_SPREAD), which on the rate grids of bleach is
+ * a small fraction of a cell, so a cell of two segments still resolves
+ * loops a segment deep. */
+#define DELOOP_CELL_SEGS 2.0
 /* Largest classifier grid (nodes): 8 bytes each, and fast marching at a
  * few million nodes a second. */
 #define DELOOP_MAX_FMM_NODES 4.0e7
@@ -532,9 +538,11 @@ struct fmm *deloop_classifier(const struct ratefile *r, double seg,
 	double nodes = 1;
 	int n[3] = {r->nx, r->ny, r->nz};
 	for (int d = 0; d < 3; d++) {
-		/* a cell no wider than a segment: a young loop is about a
-		 * segment deep, and must be deeper than the margin */
-		double k = seg > 0 && h[d] > seg ? ceil(h[d] / seg) : 1;
+		/* a cell no wider than DELOOP_CELL_SEGS segments: a young
+		 * loop is about a segment deep, and must be deeper than the
+		 * margin */
+		double k = seg > 0 && h[d] > DELOOP_CELL_SEGS * seg ?
+			ceil(h[d] / (DELOOP_CELL_SEGS * seg)) : 1;
 		if (d == 2 && k < nz_auto)
 			k = nz_auto;
 		refine[d] = k > FMM_MAX_REFINE ? FMM_MAX_REFINE : (int)k;
