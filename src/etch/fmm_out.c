@@ -108,24 +108,21 @@ static struct fmm *coarse_view(const struct fmm *f)
 {
 	struct fmm *c = xcalloc(1, sizeof *c);
 	*c = *f;
-	size_t total = 1;
+	size_t r[3], total = 1;
 	for (int d = 0; d < 3; d++) {
-		int r = f->refine[d] > 0 ? f->refine[d] : 1;
-		c->n[d] = (f->n[d] - 1) / r + 1;
-		c->h[d] = f->h[d] * r;
+		r[d] = f->refine[d] > 0 ? (size_t)f->refine[d] : 1;
+		c->n[d] = (int)((size_t)(f->n[d] - 1) / r[d] + 1);
+		c->h[d] = f->h[d] * (double)r[d];
 		c->refine[d] = 1;
 		total *= (size_t)c->n[d];
 	}
 	c->t = xreallocarray(NULL, total, sizeof *c->t);
 	size_t q = 0;
-	for (int k = 0; k < c->n[2]; k++)
-		for (int j = 0; j < c->n[1]; j++)
-			for (int i = 0; i < c->n[0]; i++) {
-				size_t src = ((size_t)k * (size_t)(f->refine[2] > 0 ? f->refine[2] : 1) * (size_t)f->n[1] +
-					      (size_t)j * (size_t)(f->refine[1] > 0 ? f->refine[1] : 1)) * (size_t)f->n[0] +
-					     (size_t)i * (size_t)(f->refine[0] > 0 ? f->refine[0] : 1);
-				c->t[q++] = f->t[src];
-			}
+	for (size_t k = 0; k < (size_t)c->n[2]; k++)
+		for (size_t j = 0; j < (size_t)c->n[1]; j++)
+			for (size_t i = 0; i < (size_t)c->n[0]; i++)
+				c->t[q++] = f->t[(k * r[2] * (size_t)f->n[1] + j * r[1]) *
+						 (size_t)f->n[0] + i * r[0]];
 	return c;
 }
 
