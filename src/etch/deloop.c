@@ -54,6 +54,10 @@
  * a small fraction of a cell, so a cell of two segments still resolves
  * loops a segment deep. */
 #define DELOOP_CELL_SEGS 2.0
+/* ... but by at most this factor per axis for that reason (memory and
+ * time grow with its cube; z refinement for standing waves is separate,
+ * fmm_auto_refine). */
+#define DELOOP_MAX_REFINE 4
 /* Largest classifier grid (nodes): 8 bytes each, and fast marching at a
  * few million nodes a second. */
 #define DELOOP_MAX_FMM_NODES 4.0e7
@@ -256,10 +260,35 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 	int *stamp = xcalloc(m->ntri, sizeof *stamp);
 	struct deloop_pierce *list = NULL;
 	size_t n = 0, cap = 0;
+	/* segments visited cell by cell (a counting sort on the cell of
+	 * their first node): consecutive queries then read the same
+	 * triangles, which stay in cache, where the mesh's own order, after
+	 * many splits and merges, is scattered over the surface */
+	size_t nc = (size_t)g.n[0] * (size_t)g.n[1] * (size_t)g.n[2];
+	size_t *at = xcalloc(nc + 1, sizeof *at);
+	int *order = xreallocarray(NULL, m->nseg + 1, sizeof *order);
+	size_t *cellof = xreallocarray(NULL, m->nseg + 1, sizeof *cellof);
 	for (size_t s = 0; s < m->nseg; s++) {
-		const struct segment *sg = &m->seg[s];
-		if (!sg->alive)
+		if (!m->seg[s].alive)
 			continue;
+		const double *p = m->node[m->seg[s].n[0]].p;
+		int c[3], c1[3];
+		cell_range(&g, p, p, c, c1);
+		cellof[s] = ((size_t)c[2] * (size_t)g.n[1] + (size_t)c[1]) * (size_t)g.n[0] +
+			    (size_t)c[0];
+		at[cellof[s] + 1]++;
+	}
+	for (size_t c = 0; c < nc; c++)
+		at[c + 1] += at[c];
+	size_t nlive = at[nc];
+	for (size_t s = 0; s < m->nseg; s++)
+		if (m->seg[s].alive)
+			order[at[cellof[s]]++] = (int)s;
+	free(at);
+	free(cellof);
+	for (size_t o = 0; o < nlive; o++) {
+		size_t s = (size_t)order[o];
+		const struct segment *sg = &m->seg[s];
 		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
 		double lo[3], hi[3];
 		int c0[3], c1[3];
@@ -268,7 +297,6 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 			hi[d] = fmax(p[d], q[d]);
 		}
 		cell_range(&g, lo, hi, c0, c1);
-		size_t first = n;
 		for (int k = c0[2]; k <= c1[2]; k++)
 			for (int j = c0[1]; j <= c1[1]; j++)
 				for (int i = c0[0]; i <= c1[0]; i++) {
@@ -297,10 +325,11 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 						n++;
 					}
 				}
-		/* cell order depends on the grid; triangle order does not */
-		if (n - first > 1)
-			qsort(list + first, n - first, sizeof *list, cmp_pierce);
 	}
+	/* the visiting order depends on the grid; the list's does not */
+	if (n > 1)
+		qsort(list, n, sizeof *list, cmp_pierce);
+	free(order);
 	free(stamp);
 	grid_free(&g);
 	*out = list;
@@ -542,7 +571,7 @@ struct fmm *deloop_classifier(const struct ratefile *r, double seg,
 		 * loop is about a segment deep, and must be deeper than the
 		 * margin */
 		double k = seg > 0 && h[d] > DELOOP_CELL_SEGS * seg ?
-			ceil(h[d] / (DELOOP_CELL_SEGS * seg)) : 1;
+			fmin(ceil(h[d] / (DELOOP_CELL_SEGS * seg)), DELOOP_MAX_REFINE) : 1;
 		if (d == 2 && k < nz_auto)
 			k = nz_auto;
 		refine[d] = k > FMM_MAX_REFINE ? FMM_MAX_REFINE : (int)k;

@@ -64,6 +64,7 @@ struct etch_stats {
 	long max_nodes, max_tris;
 	long deloops, loops, looped_tris, crossings_left;   /* deloop.c */
 	double deloop_s;        /* processor time spent delooping, s */
+	double deloop_fmm_s;    /* of which building the classifier, s */
 };
 
 /* start.c: the flat resist top (a regular triangulation of z = zmax with

@@ -323,9 +323,9 @@ int main(int argc, char **argv)
 				st.clipped_tris, st.stopped);
 			if (o.deloop)
 				fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
-					"triangles) in %.3g s; %ld crossings left\n", util_prog(),
-					st.deloops, st.loops, st.looped_tris, st.deloop_s,
-					st.crossings_left);
+					"triangles) in %.3g s (classifier %.3g s); %ld crossings "
+					"left\n", util_prog(), st.deloops, st.loops, st.looped_tris,
+					st.deloop_s, st.deloop_fmm_s, st.crossings_left);
 		}
 		mesh_free(m);
 	}

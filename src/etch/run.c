@@ -90,7 +90,8 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		if (!o->rate)
 			die("internal error: -deloop without the rate array");
 		fm = deloop_classifier(o->rate, seg, o->seed ? &o->seedp[0][0] : NULL, o->seed);
-		st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
+		st->deloop_fmm_s = (double)(clock() - c0) / CLOCKS_PER_SEC;
+		st->deloop_s += st->deloop_fmm_s;
 	}
 	double t = 0;
 	long since_clip = 0;
