@@ -76,6 +76,9 @@
  * triangle's plane: rounding is ~1e-16, real crossings are steeper than
  * 1e-9 by far. */
 #define PLANE_EPS 1e-9
+/* Cuts nearer than this fraction of the segment to the kept node are not
+ * made (a near zero-length segment would come of it). */
+#define MIN_CUT 1e-3
 
 static double orient(const double *a, const double *b, const double *c, const double *d)
 {
@@ -491,11 +494,15 @@ static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_
 			double u = g0 ? 0 : 1;
 			for (size_t k = i; k < j; k++)
 				u = g0 ? fmax(u, pc[k].u) : fmin(u, pc[k].u);
-			/* pulled back towards the kept node */
-			u = g0 ? u + DELOOP_PULLBACK * (1 - u) : u * (1 - DELOOP_PULLBACK);
-			todo[ntodo].s = pc[i].s;
-			todo[ntodo].u = u;
-			ntodo++;
+			/* pulled back towards the kept node; a crossing at the
+			 * kept node itself (it lies on the other sheet) is no
+			 * place for a new node: the kept node ends the sheet */
+			double from_kept = (g0 ? 1 - u : u) * (1 - DELOOP_PULLBACK);
+			if (from_kept > MIN_CUT) {
+				todo[ntodo].s = pc[i].s;
+				todo[ntodo].u = g0 ? 1 - from_kept : from_kept;
+				ntodo++;
+			}
 		}
 		i = j;
 	}
