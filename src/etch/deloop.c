@@ -466,10 +466,30 @@ static unsigned char *classify_local(const struct mesh *m, const struct deloop_p
 			continue;
 		int a = m->seg[pc[i].s].n[0], b = m->seg[pc[i].s].n[1], va, vb;
 		double da = node_dist(m, a, fm, f, t, &va), db = node_dist(m, b, fm, f, t, &vb);
-		if (va && (!vb || da < db))
+		if (va && (!vb || da < db)) {
 			gone[a] = 1;
-		else if (vb)
+		} else if (vb) {
 			gone[b] = 1;
+		} else {
+			/* a segment on the substrate (or the top) crossing
+			 * another sheet: the crossed triangle's deepest voting
+			 * node goes, or if none votes its last node, so that
+			 * every pass makes progress */
+			const struct triangle *tr = &m->tri[pc[i].t];
+			int pick = tr->n[0];
+			double dp = HUGE_VAL;
+			for (int j = 0; j < 3; j++) {
+				int v;
+				double d = node_dist(m, tr->n[j], fm, f, t, &v);
+				if (v && d < dp) {
+					dp = d;
+					pick = tr->n[j];
+				} else if (dp == HUGE_VAL && tr->n[j] > pick) {
+					pick = tr->n[j];
+				}
+			}
+			gone[pick] = 1;
+		}
 	}
 	return gone;
 }
