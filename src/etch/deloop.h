@@ -18,14 +18,20 @@
  *     whole by a volumetric test: the median, over its nodes, of the signed
  *     distance (T(p) - t) R(p) to the developed surface, T the arrival time
  *     of the independent fast-marching engine (fmm.h).  A patch whose median
- *     lies more than a grid cell inside developed resist is a loop.  One
+ *     lies inside developed resist by more than a margin (a few times the
+ *     engines' typical disagreement on this mesh) is a loop.  One
  *     verdict per patch, from every node of it, so pinwheeling triangles or
  *     three triangles meeting at a point (where the thesis' motion test
  *     failed) cannot flip it;
  *  3. every pierced segment from a kept node to a loop node is cut where it
  *     crosses the other sheet (pulled back a little towards the kept node,
  *     see DELOOP_PULLBACK), and every triangle with a loop node is deleted.
- *     The kept mesh then ends on the intersection curve.
+ *     The kept mesh then ends on the intersection curve (each sheet on its
+ *     own side of it: the sheets are not stitched together);
+ *  4. the crossings are searched again; any left (folds shallower than the
+ *     margin, where both sides pass for front) go node by node, the node of
+ *     a crossing segment deeper in developed resist first, until none is
+ *     left or DELOOP_PASSES passes have run.
  */
 #ifndef ETCH_DELOOP_H
 #define ETCH_DELOOP_H
@@ -57,7 +63,7 @@ struct deloop_report {
 	long loops;             /* patches removed */
 	long folds;             /* local passes needed after the patch pass */
 	double margin;          /* the patch verdict's margin, um */
-	long removed_tris;      /* triangles deleted (before the cuts' halves) */
+	long removed_tris;      /* triangles deleted (after the cuts) */
 	long cuts;              /* segments cut on the intersection curves */
 	long left;              /* pierces between two kept patches (0 if clean) */
 };
