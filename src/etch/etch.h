@@ -51,6 +51,7 @@ struct etch_opts {
 	enum method method;
 	int refine[3];          /* -method fmm: cell subdivisions in x, y, z */
 	int refine_auto;        /* -refine auto: z factor from the rate array */
+	int xcheck;             /* report the distance to the fast-marching surface */
 	const char *out3d, *out2d, *outcut;
 	const char *input;
 };

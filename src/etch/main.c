@@ -7,10 +7,12 @@
 #include "args.h"
 #include "etch.h"
 #include "fmm.h"
+#include "fmt_plot.h"
 #include "fmt_rate.h"
 #include "num.h"
 #include "util.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,6 +41,8 @@ static const char usage[] =
 	"  -seed x y z      start from a seed point instead of the resist top\n"
 	"                   (repeat for several, at most 16)\n"
 	"  -method ray|fmm  ray-string (default) or fast-marching engine\n"
+	"  -xcheck          after a ray-string run, report how far its nodes lie\n"
+	"                   from the fast-marching surface at each print time\n"
 	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
 	"                   n times in z (or nx, ny, nz in x, y, z); auto picks z\n"
 	"                   from the standing waves (default 1: no refinement)\n"
@@ -141,6 +145,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			}
 			o->deloop = 1;
 		}
+		else if (args_flag(&a, "-xcheck"))
+			o->xcheck = 1;
 		else if (args_flag(&a, "-check"))
 			o->check = 1;
 		else if (args_flag(&a, "-q"))
@@ -191,8 +197,10 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	else
 		args_error(&a, "-method must be ray or fmm, not %.40s", method);
 	if ((o->refine_auto || o->refine[0] * o->refine[1] * o->refine[2] > 1) &&
-	    o->method != METHOD_FMM)
-		args_error(&a, "-refine goes with -method fmm");
+	    o->method != METHOD_FMM && !o->xcheck)
+		args_error(&a, "-refine goes with -method fmm or -xcheck");
+	if (o->xcheck && o->method == METHOD_FMM)
+		args_error(&a, "-xcheck compares the ray-string run with fast marching: not with -method fmm");
 	if (cutaxis) {
 		if (strcmp(cutaxis, "x") == 0)
 			o->cut_axis = 0;
@@ -248,29 +256,109 @@ static void check_inside(const struct rfield *f, const struct etch_opts *o)
 	}
 }
 
+/* The print times: every pt seconds, and the end (run.c hits the same). */
+static double *print_times(const struct etch_opts *o, int *n)
+{
+	double *times = NULL;
+	size_t cap = 0;
+	*n = 0;
+	for (long k = 1;; k++) {
+		double tp = o->pt > 0 ? k * o->pt : o->et;
+		if (tp > o->et * (1 - 1e-12))
+			tp = o->et;
+		xgrow(&times, &cap, (size_t)*n + 1, sizeof *times);
+		times[(*n)++] = tp;
+		if (tp >= o->et)
+			break;
+	}
+	return times;
+}
+
+/* The refinement asked for with -refine, or its auto choice. */
+static void refinement(const struct ratefile *r, const struct etch_opts *o, int refine[3])
+{
+	for (int d = 0; d < 3; d++)
+		refine[d] = o->refine[d];
+	if (o->refine_auto)
+		refine[2] = fmm_auto_refine(r);
+}
+
+static int cmp_point(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+	for (int d = 0; d < 3; d++)
+		if (p[d] != q[d])
+			return p[d] < q[d] ? -1 : 1;
+	return 0;
+}
+
+/* Sorts n points (x y z triples) and drops repeats; returns the count. */
+static size_t unique_points(double *p, size_t n)
+{
+	if (n == 0)
+		return 0;
+	qsort(p, n, 3 * sizeof *p, cmp_point);
+	size_t m = 1;
+	for (size_t i = 1; i < n; i++)
+		if (cmp_point(p + 3 * i, p + 3 * (m - 1)) != 0)
+			memmove(p + 3 * m++, p + 3 * i, 3 * sizeof *p);
+	return m;
+}
+
+/* -xcheck: the cross-check of the two engines (etch(1), issue of the
+ * fast-marching engine): the vertices of every set of the ray-string
+ * curves.plot against the fast-marching surface T = t at its print time,
+ * median and 95th percentile of their distances, in um and in rate-grid
+ * z cells.  The solve is refined in z as -refine says, by default auto. */
+static void xcheck(const struct ratefile *r, struct etch_opts *o)
+{
+	if (!o->refine_auto && o->refine[0] * o->refine[1] * o->refine[2] == 1)
+		o->refine_auto = 1;
+	int refine[3];
+	refinement(r, o, refine);
+	struct fmm *fm = fmm_solve(r, refine);
+	struct plot_file *pf = fmt_plot_read(o->out3d, 3);
+	int n;
+	double *times = print_times(o, &n);
+	/* the rate grid is anisotropic (a resist has ~0.002 um in z against
+	 * ~0.1 um in x and y): report both cell sizes */
+	double hz = (r->zmax - r->zmin) / (r->nz - 1);
+	double hxy = fmax((r->xmax - r->xmin) / (r->nx - 1), (r->ymax - r->ymin) / (r->ny - 1));
+	for (int k = 0; k < pf->nsets && k < n; k++) {
+		const struct plot_set *set = &pf->sets[k];
+		/* the mesh nodes: each triangle's three corners (its fourth
+		 * point closes it), every node once */
+		double *p = xreallocarray(NULL, (size_t)set->ncurves * 3 + 1, 3 * sizeof *p);
+		size_t np = 0;
+		for (int c = 0; c < set->ncurves; c++)
+			for (int q = 0; q < 3 && q < set->curves[c].npts; q++)
+				memcpy(p + 3 * np++, set->curves[c].p + 3 * q, 3 * sizeof *p);
+		np = unique_points(p, np);
+		double med, p95;
+		fmm_distance_stats(fm, p, np, times[k], &med, &p95);
+		fprintf(stderr, "%s: xcheck t = %g s: %zu nodes from the fast-marching "
+			"surface (z x%d): median %.3g um, 95%% %.3g um (%.2f and %.2f x-y cells, "
+			"%.2f and %.2f z cells)\n", util_prog(), times[k], np, refine[2], med, p95,
+			med / hxy, p95 / hxy, med / hz, p95 / hz);
+		free(p);
+	}
+	free(times);
+	fmt_plot_free(pf);
+	fmm_free(fm);
+}
+
 /* The fast-marching engine (fmm.h): arrival times on the (refined) rate
  * grid, isosurfaces at the print times, and the same curves.cut as the
  * ray-string engine. */
 static void run_fmm(const struct ratefile *r, const struct rfield *f,
 		    const struct etch_opts *o)
 {
-	int refine[3] = {o->refine[0], o->refine[1], o->refine[2]};
-	if (o->refine_auto)
-		refine[2] = fmm_auto_refine(r);
+	int refine[3];
+	refinement(r, o, refine);
 	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, &o->seedp[0][0], o->seed)
 				 : fmm_solve(r, refine);
-	int n = 0;
-	double *times = NULL;
-	size_t cap = 0;
-	for (long k = 1;; k++) {
-		double tp = o->pt > 0 ? k * o->pt : o->et;
-		if (tp > o->et * (1 - 1e-12))
-			tp = o->et;
-		xgrow(&times, &cap, (size_t)n + 1, sizeof *times);
-		times[n++] = tp;
-		if (tp >= o->et)
-			break;
-	}
+	int n;
+	double *times = print_times(o, &n);
 	fmm_write_curves(fm, times, n, o->out3d, o->out2d);
 	if (o->cut_axis >= 0 && o->outcut) {
 		/* bounds as the ray-string cut: the other axis' range, then z */
@@ -328,6 +416,8 @@ int main(int argc, char **argv)
 					st.deloop_s, st.deloop_fmm_s, st.crossings_left);
 		}
 		mesh_free(m);
+		if (o.xcheck)
+			xcheck(r, &o);
 	}
 	fmt_rate_free(r);
 	free(n2);
