@@ -66,7 +66,7 @@
 /* Passes: the patch pass, then local passes for folds shallower than the
  * margin, each on the crossings the previous left; two or three suffice
  * in every case tested, the cap bounds the work. */
-#define DELOOP_PASSES 6
+#define DELOOP_PASSES 12
 
 /* Barycentric slack of the crossing test: rounding of the determinants
  * of nodes of order 1 um apart is ~1e-16 relative; this is far above it
@@ -577,6 +577,12 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 		cut_and_remove(m, pc, np, gone, rep);
 		free(gone);
 		free(pc);
+		if (pass + 1 == DELOOP_PASSES) {
+			/* the cap: report what the last pass left, not what it
+			 * started from */
+			rep->left = (long)deloop_pierces(m, &pc);
+			free(pc);
+		}
 	}
 	return rep->loops;
 }
