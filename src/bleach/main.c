@@ -48,15 +48,11 @@ static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
 	o->level = 0.8;
 	while (a.i < argc) {
-		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			fputs(usage, stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_flag(&a, "-ascii"))
 			o->ascii = 1;
 		else if (args_flag(&a, "-solid"))
@@ -67,20 +63,14 @@ static void parse_options(int argc, char **argv, struct options *o)
 			;
 		else if (args_str(&a, "-o", &o->output))
 			;
-		else if (s[0] == '-' && s[1] != '\0')
-			args_unknown(&a);
-		else if (!o->contour)
-			o->contour = argv[a.i++];
-		else if (!o->input)
-			o->input = argv[a.i++];
 		else
-			args_error(&a, "more than two input files (%.60s)", argv[a.i++]);
+			args_operand(&a, (const char **[]){&o->contour, &o->input}, 2, "file");
 	}
 	if (!o->contour)
 		args_error(&a, "no contour-file");
 	else if (!o->input)
 		args_error(&a, "no bleach-inputfile");
-	args_done(&a, usage);
+	args_done(&a, NULL);
 }
 
 static int quiet;

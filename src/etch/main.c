@@ -112,13 +112,10 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->refine[0] = o->refine[1] = o->refine[2] = 1;
 	o->out3d = "curves.plot";
 	const char *method = "ray", *cutaxis = NULL;
+	args_usage(&a, usage, NULL, NULL);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			fputs(usage, stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_num(&a, "-et", 0, 1e12, &o->et) ||
 		    args_num(&a, "-pt", 0, 1e12, &o->pt) ||
 		    args_num(&a, "-dt", 0, 1e12, &o->dt) ||
@@ -169,12 +166,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 				cutaxis = argv[a.i + 1];
 				a.i += 3;
 			}
-		} else if (s[0] == '-' && s[1] != '\0')
-			args_unknown(&a);
-		else if (!o->input)
-			o->input = argv[a.i++];
-		else
-			args_error(&a, "more than one rate file (%.60s)", argv[a.i++]);
+		} else
+			args_operand(&a, (const char **[]){&o->input}, 1, "rate file");
 	}
 	if (!o->input)
 		args_error(&a, "no rate file");
@@ -210,7 +203,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		else
 			args_error(&a, "-cut takes x or y, not %.40s", cutaxis);
 	}
-	args_done(&a, usage);
+	args_done(&a, NULL);
 }
 
 /* out3d.2D, and out3d with .plot replaced by .cut */

@@ -14,7 +14,47 @@ void args_init(struct args *a, int argc, char **argv)
 	a->argv = argv;
 	a->i = 1;
 	a->bad = 0;
+	a->usage[0] = a->usage[1] = a->usage[2] = NULL;
 	util_setprog(argv[0]);
+}
+
+void args_usage(struct args *a, const char *part1, const char *part2, const char *part3)
+{
+	a->usage[0] = part1;
+	a->usage[1] = part2;
+	a->usage[2] = part3;
+}
+
+static void print_usage(const struct args *a, FILE *f)
+{
+	for (int k = 0; k < 3; k++)
+		if (a->usage[k])
+			fputs(a->usage[k], f);
+}
+
+void args_help_exit(struct args *a, int short_h)
+{
+	if ((short_h && args_flag(a, "-h")) || args_flag(a, "--help")) {
+		print_usage(a, stdout);
+		fshut(stdout, "stdout");
+		exit(0);
+	}
+}
+
+void args_operand(struct args *a, const char **slots[], int n, const char *name)
+{
+	const char *s = a->argv[a->i];
+	if (s[0] == '-' && s[1] != '\0') {
+		args_unknown(a);
+		return;
+	}
+	a->i++;
+	for (int k = 0; k < n; k++)
+		if (!*slots[k]) {
+			*slots[k] = s;
+			return;
+		}
+	args_error(a, "%.60s: one %s too many", s, name);
 }
 
 void args_error(struct args *a, const char *fmt, ...)
@@ -93,7 +133,10 @@ void args_unknown(struct args *a)
 void args_done(struct args *a, const char *usage)
 {
 	if (a->bad) {
-		fprintf(stderr, "%s", usage);
+		if (usage)
+			fputs(usage, stderr);
+		else
+			print_usage(a, stderr);
 		exit(EXIT_USAGE);
 	}
 }

@@ -12,9 +12,22 @@ struct args {
 	char **argv;
 	int i;          /* index of the option being looked at */
 	int bad;        /* errors reported so far */
+	const char *usage[3];   /* the usage text, in parts (args_usage) */
 };
 
 void args_init(struct args *a, int argc, char **argv);
+/* Sets the usage text, printed by args_help_exit and args_done: up to
+ * three parts printed one after another (a program's own lines, then
+ * lines shared by several programs); unused parts NULL. */
+void args_usage(struct args *a, const char *part1, const char *part2, const char *part3);
+/* If argv[i] is --help, or -h when short_h is non-zero (pdraw's -h means
+ * hidden lines): prints the usage on stdout and exits 0. */
+void args_help_exit(struct args *a, int short_h);
+/* The last branch of an option loop: a word starting with '-' (other than
+ * "-" alone, standard input) is reported as an unknown option; any other
+ * is the next operand, stored in the first of *slots[0..n-1] still NULL,
+ * or reported as one too many (name says what the operands are). */
+void args_operand(struct args *a, const char **slots[], int n, const char *name);
 /* 1 if argv[i] is exactly opt (then consumes it). */
 int args_flag(struct args *a, const char *opt);
 /* If argv[i] is opt: consumes it and its value, returned in *val; a
@@ -29,7 +42,8 @@ void args_unknown(struct args *a);
 /* Reports a usage problem (counts as bad). */
 void args_error(struct args *a, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
-/* If any error was reported: prints usage to stderr and exits 2. */
+/* If any error was reported: prints the usage (usage, or if NULL the
+ * text of args_usage) to stderr and exits 2. */
 void args_done(struct args *a, const char *usage);
 /* 1 if argv[i] is -h or --help (consumed). */
 int args_help(struct args *a);

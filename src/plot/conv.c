@@ -31,30 +31,22 @@ static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
 	while (a.i < argc) {
-		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			fputs(usage, stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_flag(&a, "-t"))
 			o->triangles = 1;
 		else if (args_flag(&a, "-old"))
 			o->old = 1;
 		else if (args_str(&a, "-o", &o->output))
 			;
-		else if (s[0] == '-' && s[1] != '\0')
-			args_unknown(&a);
-		else if (!o->input)
-			o->input = argv[a.i++];
 		else
-			args_error(&a, "more than one input file (%.60s)", argv[a.i++]);
+			args_operand(&a, (const char **[]){&o->input}, 1, "input file");
 	}
 	if (!o->input)
 		args_error(&a, "no input file");
-	args_done(&a, usage);
+	args_done(&a, NULL);
 }
 
 static void zrange(const struct contour *c, double *lo, double *hi)

@@ -35,31 +35,21 @@ static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
 	while (a.i < argc) {
-		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			fputs(usage, stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_num(&a, "-tol", 0, INFINITY, &o->tol) ||
 		    args_num(&a, "-rtol", 0, INFINITY, &o->rtol))
 			;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
-		else if (s[0] == '-' && s[1] != '\0')
-			args_unknown(&a);
-		else if (!o->a)
-			o->a = argv[a.i++];
-		else if (!o->b)
-			o->b = argv[a.i++];
 		else
-			args_error(&a, "more than two files (%.60s)", argv[a.i++]);
+			args_operand(&a, (const char **[]){&o->a, &o->b}, 2, "file");
 	}
 	if (!o->b)
 		args_error(&a, "two files are needed");
-	args_done(&a, usage);
+	args_done(&a, NULL);
 }
 
 int main(int argc, char **argv)
