@@ -92,26 +92,15 @@ struct ctx {
 	struct page *pages;
 };
 
-static void print_usage(FILE *f)
-{
-	fputs(usage_head, f);
-	fputs(plot_usage_common, f);
-	fputs(plot_usage_x, f);
-}
-
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage_head, plot_usage_common, plot_usage_x);
 	memset(o, 0, sizeof *o);
 	plot_cmd_init(&o->cmd);
 	while (a.i < argc) {
-		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			print_usage(stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_num(&a, "-c", -1e300, 1e300, &o->level)) o->has_level = 1;
 		else if (args_num(&a, "-cstep", 1e-300, 1e300, &o->cstep)) o->has_cstep = 1;
 		else if (args_flag(&a, "-ex")) o->ex = 1;
@@ -124,17 +113,13 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-old")) o->old = 1;
 		else if (args_flag(&a, "-3D") || args_flag(&a, "-3d")) o->tri = 1;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_XDISPLAY)) ;
-		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
-		else if (!o->input) o->input = argv[a.i++];
-		else args_error(&a, "more than one contour-file (%.60s)", argv[a.i++]);
+		else args_operand(&a, (const char **[]){&o->input}, 1, "contour-file");
 	}
 	if (!o->input)
 		args_error(&a, "no contour-file");
 	if (o->tri && (o->old || o->ex || o->join))
 		args_error(&a, "-3D cannot be combined with -old, -ex or -j");
-	if (a.bad)
-		print_usage(stderr);
-	args_done(&a, "");
+	args_done(&a, NULL);
 }
 
 /* ---- segments ---- */

@@ -58,37 +58,22 @@ struct ctx {
 	const struct splat_mask *m;
 };
 
-static void print_usage(FILE *f)
-{
-	fputs(usage_head, f);
-	fputs(plot_usage_common, f);
-	fputs(plot_usage_x, f);
-}
-
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage_head, plot_usage_common, plot_usage_x);
 	memset(o, 0, sizeof *o);
 	plot_cmd_init(&o->cmd);
 	while (a.i < argc) {
-		const char *s = argv[a.i];
-		if (args_help(&a)) {
-			print_usage(stdout);
-			fshut(stdout, "stdout");
-			exit(0);
-		}
+		args_help_exit(&a, 1);
 		if (args_flag(&a, "-lbl")) o->lbl = 1;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_LANDSCAPE)) ;
-		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
-		else if (!o->input) o->input = argv[a.i++];
-		else args_error(&a, "more than one mask-file (%.60s)", argv[a.i++]);
+		else args_operand(&a, (const char **[]){&o->input}, 1, "mask-file");
 	}
 	if (!o->input)
 		args_error(&a, "no mask-file");
-	if (a.bad)
-		print_usage(stderr);
-	args_done(&a, "");
+	args_done(&a, NULL);
 }
 
 static double phase_norm(double ph)

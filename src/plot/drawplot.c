@@ -65,26 +65,17 @@ struct ctx {
 #define MARKER_SIZE 6.0     /* points across */
 #define LEGEND_FONT 10.0
 
-static void usage_exit(void)
-{
-	fputs(usage_head, stdout);
-	fputs(plot_usage_common, stdout);
-	fputs(plot_usage_x, stdout);
-	fshut(stdout, "stdout");
-	exit(0);
-}
-
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage_head, plot_usage_common, plot_usage_x);
 	memset(o, 0, sizeof *o);
 	plot_cmd_init(&o->cmd);
 	o->files = xcalloc((size_t)argc, sizeof *o->files);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
-		if (args_help(&a))
-			usage_exit();
+		args_help_exit(&a, 1);
 		if (args_flag(&a, "-ar")) o->noauto = 1;
 		else if (args_flag(&a, "-clip")) o->clip = 1;
 		else if (args_flag(&a, "-e")) o->equal = 1;
@@ -98,13 +89,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (o->nfiles == 0)
 		args_error(&a, "no plot-file");
-	if (a.bad) {
-		free(o->files);
-		fputs(usage_head, stderr);
-		fputs(plot_usage_common, stderr);
-		fputs(plot_usage_x, stderr);
-	}
-	args_done(&a, "");
+	args_done(&a, NULL);
 }
 
 /* The data extent of a set (positive values only for a log axis). */

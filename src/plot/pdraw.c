@@ -91,28 +91,17 @@ struct ctx {
 	const struct plot_set **sets;
 };
 
-static void print_usage(FILE *f)
-{
-	fputs(usage_head, f);
-	fputs(plot_usage_common, f);
-	fputs(plot_usage_x, f);
-}
-
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
 	args_init(&a, argc, argv);
+	args_usage(&a, usage_head, plot_usage_common, plot_usage_x);
 	memset(o, 0, sizeof *o);
 	plot_cmd_init(&o->cmd);
 	o->files = xcalloc((size_t)argc, sizeof *o->files);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
-		if (args_flag(&a, "--help")) {
-			print_usage(stdout);
-			fshut(stdout, "stdout");
-			free(o->files);
-			exit(0);
-		}
+		args_help_exit(&a, 0); /* -h is hidden lines here */
 		if (args_flag(&a, "-v")) {
 			for (int k = 0; k < 3; k++) {
 				if (a.i >= argc || !num_parse(argv[a.i], &o->v[k])) {
@@ -134,11 +123,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (o->nfiles == 0)
 		args_error(&a, "no plotfile");
-	if (a.bad) {
-		free(o->files);
-		print_usage(stderr);
-	}
-	args_done(&a, "");
+	args_done(&a, NULL);
 }
 
 /* ---- view ---- */
