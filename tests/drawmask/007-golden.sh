@@ -7,10 +7,6 @@ printf 'window 0 2 0 2\nbackground dark\nrect 0.5 0.5 1.5 1.5 1 180\n' >small.in
 drawmask -noplot -svg small.svg -lbl small.in </dev/null || fail "drawmask failed"
 gs_check dataplot.ps
 g=$TOP/tests/drawmask/golden
-if [ -n "${REGEN:-}" ]; then
-	cp dataplot.ps "$g/small.ps"
-	cp small.svg "$g/small.svg"
-fi
-same dataplot.ps "$g/small.ps"
-same small.svg "$g/small.svg"
+golden dataplot.ps "$g/small.ps"
+golden small.svg "$g/small.svg"
 exit 0

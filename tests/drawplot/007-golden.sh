@@ -7,10 +7,6 @@ printf '0 4 0 2\n2\n3\n0 0\n2 2\n4 0\n2\n0 1\n4 1\n' >small.2D
 drawplot -noplot -svg small.svg -g small.2D </dev/null || fail "drawplot failed"
 gs_check dataplot.ps
 g=$TOP/tests/drawplot/golden
-if [ -n "${REGEN:-}" ]; then
-	cp dataplot.ps "$g/small.ps"
-	cp small.svg "$g/small.svg"
-fi
-same dataplot.ps "$g/small.ps"
-same small.svg "$g/small.svg"
+golden dataplot.ps "$g/small.ps"
+golden small.svg "$g/small.svg"
 exit 0

@@ -49,3 +49,11 @@ gs_check() {
 		fail "ghostscript failed on $1: $(head -c 600 gs.out)"
 	! grep -q "Error" gs.out || fail "ghostscript reported on $1: $(head -c 600 gs.out)"
 }
+
+# golden FILE GOLDEN: FILE must be byte-identical to the golden file
+# GOLDEN; with REGEN=1 in the environment (make regen) GOLDEN is first
+# rewritten from FILE, so review "git diff" before committing it.
+golden() {
+	[ -z "${REGEN:-}" ] || cp "$1" "$2"
+	same "$1" "$2"
+}

@@ -7,10 +7,6 @@ printf '0 1 0 1 0 1\n2\n4\n0 0 0\n1 0 0\n0 1 1\n0 0 0\n4\n0 0 1\n1 1 0\n1 0 1\n0
 pdraw -noplot -svg small.svg -h small.3D </dev/null || fail "pdraw failed"
 gs_check dataplot.ps
 g=$TOP/tests/pdraw/golden
-if [ -n "${REGEN:-}" ]; then
-	cp dataplot.ps "$g/small.ps"
-	cp small.svg "$g/small.svg"
-fi
-same dataplot.ps "$g/small.ps"
-same small.svg "$g/small.svg"
+golden dataplot.ps "$g/small.ps"
+golden small.svg "$g/small.svg"
 exit 0
