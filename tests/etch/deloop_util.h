@@ -59,7 +59,10 @@ static int mt_cross(const double *p, const double *q, const double *a, const dou
 	sub3(c, a, e2);
 	cross3(d, e2, h);
 	double det = dot3(e1, h);
-	if (fabs(det) < 1e-300)
+	/* a segment in the triangle's plane (det, the sine of the angle
+	 * between them times the lengths, at rounding level) only touches
+	 * it, as deloop.c counts it; u and v would be rounding noise */
+	if (fabs(det) <= 1e-12 * sqrt(dot3(d, d) * dot3(e1, e1) * dot3(e2, e2)))
 		return 0;
 	double inv = 1 / det;
 	sub3(p, a, sv);
