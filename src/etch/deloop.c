@@ -41,12 +41,13 @@
 #define DELOOP_TOL_SPREAD 4.0
 #define DELOOP_TOL_MIN 0.05
 #define DELOOP_TOL_MAX 1.0
-/* A cut node is placed this fraction of the way back from the crossing
- * towards the kept node: the kept sheets end on chords of the curved
- * intersection curve, and two chords of the same curve, one in each
- * sheet, would otherwise cross each other by a rounding-sized or
- * curvature-sized margin.  A tenth of a segment leaves a gap under 0.1
- * S_max between the sheets (well inside the 2-segment and 1% checks). */
+/* A cut node the joining (deloop_zip.c) leaves open is moved this
+ * fraction of the way back from the crossing towards the kept node: the
+ * kept sheets end on chords of the curved intersection curve, and two
+ * chords of the same curve, one in each sheet, would otherwise cross each
+ * other by a rounding-sized or curvature-sized margin.  A tenth of a
+ * segment leaves a gap under 0.1 S_max between the sheets (well inside
+ * the 2-segment and 1% checks). */
 #define DELOOP_PULLBACK 0.1
 /* The classifier's cells may be this many ideal segments across before
  * its grid is refined laterally: the margin follows the engines' actual
@@ -67,6 +68,18 @@
  * margin, each on the crossings the previous left; two or three suffice
  * in every case tested, the cap bounds the work. */
 #define DELOOP_PASSES 12
+
+/* Local passes that first try to merge the chosen nodes away
+ * (merge_away); the later ones delete them, which always progresses. */
+#define DELOOP_MERGE_PASSES 6
+/* ... and only nodes on or next to a seam joined in the same run, and
+ * this many segment lengths or less past the other sheet: the folds a
+ * join leaves at its seam are that shallow (a few hundredths of a
+ * segment on the two seeds), while other folds, left by the classifier's
+ * margin on rough fronts, have layers that merging one node would leave
+ * in place (merged rather than deleted, they add 2-3% to the contact's
+ * developed volume). */
+#define DELOOP_MERGE_DEPTH 0.05
 
 /* Barycentric slack of the crossing test: rounding of the determinants
  * of nodes of order 1 um apart is ~1e-16 relative; this is far above it
@@ -495,15 +508,44 @@ static unsigned char *classify_local(const struct mesh *m, const struct deloop_p
 }
 
 /* Stage 3: cut every crossing segment from a kept node to a gone one at
- * the crossing nearest the kept node, then delete every triangle with a
- * gone node. */
+ * the crossing nearest the kept node, delete every triangle with a gone
+ * node, join the two sheets along the cuts and pull back the cut nodes
+ * left open. */
 static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_t np,
-			   const unsigned char *gone, struct deloop_report *rep)
+			   const unsigned char *gone, struct deloop_report *rep, int first,
+			   unsigned char **seam, size_t *nseam)
 {
 	size_t nn = m->nnode;
 	/* decided before any split, as the splits add segments */
-	struct { int s; double u; } *todo = xreallocarray(NULL, np + 1, sizeof *todo);
+	struct { int s; double u; int kept, node; } *todo =
+		xreallocarray(NULL, np + 1, sizeof *todo);
 	size_t ntodo = 0;
+	/* a loop node on which a crossing from a kept node ends lies on the
+	 * other sheet, i.e. on the intersection curve: in the patch pass it
+	 * is kept and ends its sheet there, as a kept node on the other
+	 * sheet does (below).  Cutting each of its segments there instead
+	 * would put several nodes at one place, which no join can pair
+	 * (two seeds a radius apart: vertices of the two start meshes meet
+	 * on the curve).  The local passes delete what they chose, so that
+	 * each pass makes progress. */
+	unsigned char *gn = xreallocarray(NULL, nn + 1, 1);
+	memcpy(gn, gone, nn);
+	for (size_t i = 0; first && i < np; ) {
+		size_t j = i;
+		while (j < np && pc[j].s == pc[i].s)
+			j++;
+		const struct segment *sg = &m->seg[pc[i].s];
+		int g0 = gone[sg->n[0]], g1 = gone[sg->n[1]];
+		if (g0 != g1) {
+			double u = g0 ? 0 : 1;
+			for (size_t k = i; k < j; k++)
+				u = g0 ? fmax(u, pc[k].u) : fmin(u, pc[k].u);
+			if ((g0 ? 1 - u : u) >= 1 - MIN_CUT)
+				gn[g0 ? sg->n[0] : sg->n[1]] = 0;
+		}
+		i = j;
+	}
+	gone = gn;
 	for (size_t i = 0; i < np; ) {
 		size_t j = i;
 		while (j < np && pc[j].s == pc[i].s)
@@ -514,13 +556,14 @@ static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_
 			double u = g0 ? 0 : 1;
 			for (size_t k = i; k < j; k++)
 				u = g0 ? fmax(u, pc[k].u) : fmin(u, pc[k].u);
-			/* pulled back towards the kept node; a crossing at the
-			 * kept node itself (it lies on the other sheet) is no
-			 * place for a new node: the kept node ends the sheet */
-			double from_kept = (g0 ? 1 - u : u) * (1 - DELOOP_PULLBACK);
+			/* a crossing at the kept node itself (it lies on the
+			 * other sheet) is no place for a new node: the kept
+			 * node ends the sheet */
+			double from_kept = g0 ? 1 - u : u;
 			if (from_kept > MIN_CUT) {
 				todo[ntodo].s = pc[i].s;
-				todo[ntodo].u = g0 ? 1 - from_kept : from_kept;
+				todo[ntodo].u = u;
+				todo[ntodo].kept = g0 ? sg->n[1] : sg->n[0];
 				ntodo++;
 			}
 		}
@@ -539,11 +582,14 @@ static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_
 		for (int d = 0; d < 3; d++)
 			r[d] = rl > 1e-12 ? r[d] / rl : (u < 0.5 ? a->s[d] : b->s[d]);
 		unsigned fl = a->flags & b->flags & (ON_WALLS | ON_SUB);
-		mesh_split(m, s, p, r, fl);
+		todo[i].node = mesh_split(m, s, p, r, fl);
 		rep->cuts++;
 	}
-	free(todo);
-	/* new nodes (index >= nn) are kept */
+	/* new nodes (index >= nn) are kept; the kept nodes of deleted
+	 * triangles and the new nodes are where the sheets now end */
+	size_t nf = m->nnode;
+	unsigned char *fresh = xcalloc(nf + 1, 1);
+	memset(fresh + nn, 1, nf - nn);
 	for (size_t tt = 0; tt < m->ntri; tt++) {
 		const struct triangle *tr = &m->tri[tt];
 		if (!tr->alive)
@@ -552,16 +598,129 @@ static void cut_and_remove(struct mesh *m, const struct deloop_pierce *pc, size_
 		for (int j = 0; j < 3; j++)
 			any |= (size_t)tr->n[j] < nn && gone[tr->n[j]];
 		if (any) {
+			for (int j = 0; j < 3; j++)
+				fresh[tr->n[j]] = 1;
 			mesh_kill_triangle(m, (int)tt);
 			rep->removed_tris++;
 		}
 	}
+	if (first)
+		rep->open_cut = deloop_open_length(m);
+	unsigned char *welded = xcalloc(nf + 1, 1);
+	rep->joined += deloop_zip(m, fresh, nf, welded, nf);
+	/* the seam nodes, for merge_away */
+	if (*nseam < nf) {
+		*seam = xreallocarray(*seam, nf, 1);
+		memset(*seam + *nseam, 0, nf - *nseam);
+		*nseam = nf;
+	}
+	for (size_t i = 0; i < nf; i++)
+		(*seam)[i] |= welded[i];
+	/* the cut nodes left open: pulled back (DELOOP_PULLBACK) */
+	for (size_t i = 0; i < ntodo; i++) {
+		int c = todo[i].node, k = todo[i].kept;
+		struct node *nc = &m->node[c];
+		if (!nc->alive || welded[c] || !m->node[k].alive)
+			continue;
+		for (int d = 0; d < 3; d++)
+			nc->p[d] -= DELOOP_PULLBACK * (nc->p[d] - m->node[k].p[d]);
+	}
+	free(welded);
+	free(fresh);
+	free(todo);
+	free(gn);
+}
+
+/* The local passes' first resort at a seam: a node chosen to go, on or
+ * next to a seam this run joined (seam, nseam) and barely past the other
+ * sheet (DELOOP_MERGE_DEPTH), is merged onto its nearest neighbour not
+ * chosen (mesh_merge, thesis 8.4.1.2, with all its checks) instead of
+ * being deleted, so that the joined surface stays closed; the merge
+ * moves the surface by less than a segment.  Returns the nodes merged;
+ * none (every merge refused) leaves the deletion to cut_and_remove. */
+static long merge_away(struct mesh *m, const struct deloop_pierce *pc, size_t np,
+		       const unsigned char *gone, const unsigned char *seam, size_t nseam,
+		       struct deloop_report *rep)
+{
+	long merged = 0;
+	size_t nn = m->nnode;
+	/* only nodes just past the other sheet: for every crossing on their
+	 * segments, within DELOOP_MERGE_DEPTH segment lengths of the
+	 * crossed triangle's plane */
+	unsigned char *shallow = xcalloc(nn + 1, 1);
+	for (size_t i = 0; i < np; i++)
+		for (int e = 0; e < 2; e++) {
+			int g = m->seg[pc[i].s].n[e];
+			if (!gone[g] || shallow[g] == 2)
+				continue;
+			const struct triangle *tr = &m->tri[pc[i].t];
+			const double *a = m->node[tr->n[0]].p, *b = m->node[tr->n[1]].p,
+				*c = m->node[tr->n[2]].p;
+			double u[3], v[3];
+			for (int d = 0; d < 3; d++) {
+				u[d] = b[d] - a[d];
+				v[d] = c[d] - a[d];
+			}
+			double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+				       u[0] * v[1] - u[1] * v[0]};
+			double nl = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+			double depth = nl > 0 ? fabs(orient(a, b, c, m->node[g].p)) / nl : HUGE_VAL;
+			shallow[g] = depth <= DELOOP_MERGE_DEPTH * mesh_seg_length(m, pc[i].s) ? 1 : 2;
+		}
+	for (size_t g = 0; g < nn; g++) {
+		if (!gone[g] || !m->node[g].alive || shallow[g] != 1)
+			continue;
+		/* at a seam this run joined: the node or a neighbour on it */
+		int near = g < nseam && seam[g];
+		for (int k = 0; k < m->node[g].nseg && !near; k++) {
+			const struct segment *sg = &m->seg[m->node[g].seg[k]];
+			int o = sg->n[0] == (int)g ? sg->n[1] : sg->n[0];
+			near = (size_t)o < nseam && seam[o];
+		}
+		if (!near)
+			continue;
+		/* the neighbours by distance, nearest first (ties by index) */
+		const struct node *nd = &m->node[g];
+		int best = -1;
+		double bl = HUGE_VAL;
+		for (int pick = 0; pick < nd->nseg && best < 0; pick++) {
+			double lim = bl;
+			int cand = -1;
+			bl = HUGE_VAL;
+			for (int k = 0; k < nd->nseg; k++) {
+				int s = nd->seg[k];
+				int o = m->seg[s].n[0] == (int)g ? m->seg[s].n[1] : m->seg[s].n[0];
+				double l = mesh_seg_length(m, s);
+				if ((size_t)o < nn && gone[o])
+					continue;
+				if (pick > 0 && !(l > lim))
+					continue;
+				if (l < bl) {
+					bl = l;
+					cand = s;
+				}
+			}
+			if (cand < 0)
+				break;
+			if (mesh_can_merge(m, cand, (int)g))
+				best = cand;
+		}
+		if (best < 0)
+			continue;
+		mesh_merge(m, best, (int)g);
+		merged++;
+	}
+	free(shallow);
+	rep->merged += merged;
+	return merged;
 }
 
 long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep)
 {
 	memset(rep, 0, sizeof *rep);
+	unsigned char *seam = NULL;     /* nodes joined across a seam this run */
+	size_t nseam = 0;
 	for (int pass = 0; pass < DELOOP_PASSES; pass++) {
 		struct deloop_pierce *pc;
 		size_t np = deloop_pierces(m, &pc);
@@ -574,7 +733,9 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			: classify_local(m, pc, np, fm, f, t, &rep->folds);
 		/* the next pass recounts: cutting can leave a crossing that
 		 * no pierce of this one showed */
-		cut_and_remove(m, pc, np, gone, rep);
+		if (pass == 0 || pass > DELOOP_MERGE_PASSES ||
+		    !merge_away(m, pc, np, gone, seam, nseam, rep))
+			cut_and_remove(m, pc, np, gone, rep, pass == 0, &seam, &nseam);
 		free(gone);
 		free(pc);
 		if (pass + 1 == DELOOP_PASSES) {
@@ -584,6 +745,8 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 			free(pc);
 		}
 	}
+	free(seam);
+	rep->open_left = deloop_open_length(m);
 	return rep->loops;
 }
 

@@ -24,14 +24,19 @@
  *     three triangles meeting at a point (where the thesis' motion test
  *     failed) cannot flip it;
  *  3. every pierced segment from a kept node to a loop node is cut where it
- *     crosses the other sheet (pulled back a little towards the kept node,
- *     see DELOOP_PULLBACK), and every triangle with a loop node is deleted.
- *     The kept mesh then ends on the intersection curve (each sheet on its
- *     own side of it: the sheets are not stitched together);
+ *     crosses the other sheet, and every triangle with a loop node is
+ *     deleted.  The kept sheets then end on the intersection curve, and
+ *     are joined there (deloop_zip.c, thesis Figure 8.11): the two border
+ *     chains become one chain of shared nodes and segments.  Stretches
+ *     that cannot be joined are left open, their cut nodes pulled back a
+ *     little towards the kept nodes (DELOOP_PULLBACK) so that the sheets
+ *     do not touch;
  *  4. the crossings are searched again; any left (folds shallower than the
  *     margin, where both sides pass for front) go node by node, the node of
  *     a crossing segment deeper in developed resist first, until none is
- *     left or DELOOP_PASSES passes have run.
+ *     left or DELOOP_PASSES passes have run.  A node barely past the
+ *     other sheet (a fold at a joined seam) is merged onto a neighbour
+ *     rather than deleted, so that the joined surface stays closed.
  */
 #ifndef ETCH_DELOOP_H
 #define ETCH_DELOOP_H
@@ -66,6 +71,10 @@ struct deloop_report {
 	long removed_tris;      /* triangles deleted (after the cuts) */
 	long cuts;              /* segments cut on the intersection curves */
 	long left;              /* pierces between two kept patches (0 if clean) */
+	long joined;            /* seam segments joined (deloop_zip) */
+	long merged;            /* fold nodes merged away (local passes) */
+	double open_cut;        /* open border (um) the first pass's cuts left, before joining */
+	double open_left;       /* open border (um) at the end of the run */
 };
 
 /* Deloops m at time t (s), classifying with the arrival times fm and the
@@ -73,6 +82,17 @@ struct deloop_report {
  * consistent (mesh_check); call mesh_compact afterwards. */
 long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep);
+
+/* Joins the open borders left by the cuts (deloop_zip.c): only open
+ * segments between nodes marked in fresh (nodes from nfresh on count as
+ * marked) take part.  welded[i] (i < nwelded) is set for every node that
+ * took the other sheet's node.  Returns the segments joined. */
+long deloop_zip(struct mesh *m, const unsigned char *fresh, size_t nfresh,
+		unsigned char *welded, size_t nwelded);
+
+/* Total length (um) of the open border of m: segments with one triangle
+ * not lying on a face of the box. */
+double deloop_open_length(const struct mesh *m);
 
 /* The classifier for a simulation: the fast-marching solution from the
  * resist top (nseeds = 0) or from the seed points (x y z triples), its

@@ -66,6 +66,9 @@ struct etch_stats {
 	long deloops, loops, looped_tris, crossings_left;   /* deloop.c */
 	double deloop_s;        /* processor time spent delooping, s */
 	double deloop_fmm_s;    /* of which building the classifier, s */
+	long seam_joined;       /* seam segments joined (deloop_zip.c) */
+	double open_cut, open_left;     /* open border (um) after the cuts of the
+					 * last deloop, before joining, and after */
 };
 
 /* start.c: the flat resist top (a regular triangulation of z = zmax with

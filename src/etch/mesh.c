@@ -369,6 +369,93 @@ void mesh_merge(struct mesh *m, int s, int del)
 	kill_node(m, del);
 }
 
+/* Whether triangle t traverses its segment s from node n, and its node
+ * opposite s (through *apex). */
+static int tri_leaves(const struct mesh *m, int t, int s, int n, int *apex)
+{
+	const struct triangle *tr = &m->tri[t];
+	int j = 0;
+	while (j < 2 && tr->s[j] != s)
+		j++;
+	*apex = tr->n[(j + 2) % 3];
+	return tr->n[j] == n;
+}
+
+int mesh_can_weld(const struct mesh *m, int keep, int del)
+{
+	if (keep == del || !m->node[keep].alive || !m->node[del].alive)
+		return 0;
+	if (mesh_find_segment(m, keep, del) >= 0)
+		return 0;
+	const struct node *nd = &m->node[del];
+	for (int i = 0; i < nd->nseg; i++) {
+		int sd = nd->seg[i], x = seg_other(m, sd, del);
+		int sk = mesh_find_segment(m, keep, x);
+		if (sk < 0)
+			continue;
+		const struct segment *a = &m->seg[sd], *b = &m->seg[sk];
+		/* twins: one triangle each, else three would share a segment */
+		if (a->t[0] < 0 || a->t[1] >= 0 || b->t[0] < 0 || b->t[1] >= 0)
+			return 0;
+		int apex_d, apex_k;
+		int fd = tri_leaves(m, a->t[0], sd, del, &apex_d);
+		int fk = tri_leaves(m, b->t[0], sk, keep, &apex_k);
+		/* orientation consistent after the weld, and no two triangles
+		 * on the same three nodes */
+		if (fd == fk || apex_d == apex_k)
+			return 0;
+	}
+	return 1;
+}
+
+int mesh_weld(struct mesh *m, int keep, int del)
+{
+	int joined = 0;
+	/* del's triangles, collected before its segments move */
+	struct node *nd = &m->node[del];
+	int *around = xreallocarray(NULL, 2 * (size_t)nd->nseg + 1, sizeof *around);
+	int na = 0;
+	for (int i = 0; i < nd->nseg; i++)
+		for (int k = 0; k < 2; k++) {
+			int t = m->seg[nd->seg[i]].t[k], dup = 0;
+			for (int j = 0; j < na; j++)
+				dup |= around[j] == t;
+			if (t >= 0 && !dup)
+				around[na++] = t;
+		}
+	while (m->node[del].nseg > 0) {
+		int sd = m->node[del].seg[0], x = seg_other(m, sd, del);
+		int sk = mesh_find_segment(m, keep, x);
+		if (sk < 0) {
+			/* a segment new to keep moves over */
+			node_detach(m, del, sd);
+			struct segment *sg = &m->seg[sd];
+			sg->n[sg->n[0] == del ? 0 : 1] = keep;
+			node_attach(m, keep, sd);
+			continue;
+		}
+		/* twin border segments: sd's triangle now borders sk */
+		int t = m->seg[sd].t[0];
+		struct triangle *tr = &m->tri[t];
+		for (int j = 0; j < 3; j++)
+			if (tr->s[j] == sd)
+				tr->s[j] = sk;
+		seg_add_tri(m, sk, t);
+		m->seg[sd].t[0] = m->seg[sd].t[1] = -1;
+		kill_segment(m, sd);
+		joined++;
+	}
+	for (int i = 0; i < na; i++) {
+		struct triangle *tr = &m->tri[around[i]];
+		for (int j = 0; j < 3; j++)
+			if (tr->n[j] == del)
+				tr->n[j] = keep;
+	}
+	free(around);
+	kill_node(m, del);
+	return joined;
+}
+
 void mesh_kill_triangle(struct mesh *m, int t)
 {
 	struct triangle *tr = &m->tri[t];

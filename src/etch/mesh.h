@@ -90,6 +90,20 @@ int mesh_can_merge(const struct mesh *m, int s, int del);
  * given to the other node (Figure 8.4).  Call mesh_can_merge first. */
 void mesh_merge(struct mesh *m, int s, int del);
 
+/* Whether nodes keep and del, both on mesh borders and at (nearly) the
+ * same place, may be welded into one (delooping, thesis 8.4.3 and Figure
+ * 8.11: the two sheets cut along their intersection curve meet there):
+ * not joined by a segment, and every segment (del, x) either new to keep
+ * or, with its twin (keep, x), two border segments whose triangles
+ * traverse them in opposite directions and have different third nodes
+ * (the twins become one segment with two triangles).  Returns 1 if
+ * allowed. */
+int mesh_can_weld(const struct mesh *m, int keep, int del);
+/* Welds node del onto keep (call mesh_can_weld first): del's segments
+ * and triangles go to keep, twin border segments become one; keep keeps
+ * its position, ray and flags.  Returns the number of segments joined. */
+int mesh_weld(struct mesh *m, int keep, int del);
+
 /* Deletes triangle t; segments left without a triangle and nodes left
  * without a segment are deleted too. */
 void mesh_kill_triangle(struct mesh *m, int t);

@@ -70,6 +70,9 @@ static void deloop_now(struct mesh *m, const struct fmm *fm, const struct rfield
 	st->loops += rep.loops;
 	st->looped_tris += rep.removed_tris;
 	st->crossings_left = rep.left;
+	st->seam_joined += rep.joined;
+	st->open_cut = rep.open_cut;
+	st->open_left = rep.open_left;
 	st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
 }
 
