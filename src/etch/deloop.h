@@ -75,6 +75,7 @@ struct deloop_report {
 	long merged;            /* fold nodes merged away (local passes) */
 	double open_cut;        /* open border (um) the first pass's cuts left, before joining */
 	double open_left;       /* open border (um) at the end of the run */
+	int unjoined;            /* joining left crossings: redone without it */
 };
 
 /* Deloops m at time t (s), classifying with the arrival times fm and the

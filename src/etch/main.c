@@ -406,8 +406,10 @@ int main(int argc, char **argv)
 			if (o.deloop)
 				fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
 					"triangles) in %.3g s (classifier %.3g s); %ld crossings "
-					"left\n", util_prog(), st.deloops, st.loops, st.looped_tris,
-					st.deloop_s, st.deloop_fmm_s, st.crossings_left);
+					"left, %ld seam segments joined, %.3g um of border left "
+					"open\n", util_prog(), st.deloops, st.loops, st.looped_tris,
+					st.deloop_s, st.deloop_fmm_s, st.crossings_left,
+					st.seam_joined, st.open_left);
 		}
 		mesh_free(m);
 		if (o.xcheck)

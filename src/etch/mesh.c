@@ -33,6 +33,28 @@ void mesh_free(struct mesh *m)
 	free(m);
 }
 
+struct mesh *mesh_copy(const struct mesh *m)
+{
+	struct mesh *c = xcalloc(1, sizeof *c);
+	*c = *m;
+	c->node = xreallocarray(NULL, m->capnode + 1, sizeof *c->node);
+	c->seg = xreallocarray(NULL, m->capseg + 1, sizeof *c->seg);
+	c->tri = xreallocarray(NULL, m->captri + 1, sizeof *c->tri);
+	if (m->nnode)
+		memcpy(c->node, m->node, m->nnode * sizeof *c->node);
+	if (m->nseg)
+		memcpy(c->seg, m->seg, m->nseg * sizeof *c->seg);
+	if (m->ntri)
+		memcpy(c->tri, m->tri, m->ntri * sizeof *c->tri);
+	for (size_t i = 0; i < m->nnode; i++) {
+		const struct node *n = &m->node[i];
+		c->node[i].seg = xreallocarray(NULL, (size_t)n->capseg + 1, sizeof *n->seg);
+		if (n->nseg)
+			memcpy(c->node[i].seg, n->seg, (size_t)n->nseg * sizeof *n->seg);
+	}
+	return c;
+}
+
 int mesh_add_node(struct mesh *m, const double p[3], const double s[3], unsigned flags)
 {
 	if (m->nnode >= (size_t)0x7fffffff)

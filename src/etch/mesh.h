@@ -67,6 +67,8 @@ struct mesh {
 
 struct mesh *mesh_new(void);
 void mesh_free(struct mesh *m);
+/* A deep copy (to try an operation and fall back). */
+struct mesh *mesh_copy(const struct mesh *m);
 
 int mesh_add_node(struct mesh *m, const double p[3], const double s[3], unsigned flags);
 /* The segment joining a and b, or -1. */

@@ -25,9 +25,13 @@ etch -et 30 -pt 15 -xcheck bake.bin 2>bake.log >/dev/null || fail "etch bake"
 check bake.log
 etch -et 30 -deloop -xcheck nobake.bin 2>nobake.log >/dev/null || fail "etch nobake"
 check nobake.log
+# the loops of the unbaked contact are all removed at the default segment
+# (joining the sheets once left 4 crossings here: deloop_run falls back)
+grep -q 'deloop: .* 0 crossings left' nobake.log || fail "loops left: $(grep 'deloop:' nobake.log)"
 D=$TOP/examples/defect
 splat -q -o defect.cont "$D/mask.in" || fail "splat defect"
 bleach -q -o k.bin defect.cont "$D/resist-kodak820-110.in" || fail "bleach defect"
 etch -et 15 -deloop -xcheck k.bin 2>defect.log >/dev/null || fail "etch defect"
 check defect.log
+grep -q 'deloop: .* 0 crossings left' defect.log || fail "loops left: $(grep 'deloop:' defect.log)"
 exit 0
