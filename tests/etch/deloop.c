@@ -121,22 +121,10 @@ static void test_spheres(double et, double shift)
 {
 	printf("two seeds (0,0,0) (%g,1,%g), 1 um/s, delooped at 0.8 s%s:\n", shift, shift,
 	       et > 0.8 ? " and 1.0 s" : "");
-	double b[6] = {-1.5, 1.5, -1.5, 2.5, -1.5, 1.5};
-	struct ratefile *r = fmt_rate_new(31, 41, 31, b);
-	double *v = fmt_rate_values(r);
-	for (size_t i = 0; i < (size_t)31 * 41 * 31; i++)
-		v[i] = 1;
-	struct rfield f;
-	rfield_init(&f, r, "uniform");
-	struct etch_opts o = default_opts(et, 0.1, 0.1);
-	o.pt = 0.8;
-	o.deloop = 1;
-	o.rate = r;
-	o.seed = 2;
-	double c[2][3] = {{0, 0, 0}, {shift, 1, shift}};
-	memcpy(o.seedp, c, sizeof c);
-	struct etch_stats st = {0};
-	struct mesh *m = etch_run(&f, &o, &st);
+	struct ratefile *r;
+	struct etch_stats st;
+	struct mesh *m = two_seed_run(et, shift, &r, &st);
+	const double c[2][3] = {{0, 0, 0}, {shift, 1, shift}};
 	double worst = 0, inside = 0;
 	for (size_t i = 0; i < m->nnode; i++) {
 		if (!m->node[i].alive)
@@ -151,7 +139,7 @@ static void test_spheres(double et, double shift)
 		worst = fmax(worst, fabs(fmin(d[0], d[1]) - et) / et);
 	}
 	double area, vol;
-	mesh_area_volume(m, f.hi[2], &area, &vol);
+	mesh_area_volume(m, r->zmax, &area, &vol);
 	double half = 0.5 * sqrt(1 + 2 * shift * shift);   /* centre to the plane */
 	double exact = 2 * (4 * M_PI * et * et - 2 * M_PI * et * (et - half));
 	long left = crossings_independent(m);

@@ -187,3 +187,29 @@ static inline struct etch_opts default_opts(double et, double dt, double seg)
 	o.quiet = 1;
 	return o;
 }
+
+/* Thesis Figure 8.13's two seeds, (0, 0, 0) and (shift, 1, shift), grown
+ * at 1 um/s with steps of 0.1 s for et seconds in a box around both,
+ * delooped at 0.8 s (and at et): the mesh, with *r (free it after the
+ * mesh) and the run's statistics. */
+static inline struct mesh *two_seed_run(double et, double shift, struct ratefile **r,
+					struct etch_stats *st)
+{
+	double b[6] = {-1.5, 1.5, -1.5, 2.5, -1.5, 1.5};
+	*r = fmt_rate_new(31, 41, 31, b);
+	double *v = fmt_rate_values(*r);
+	for (size_t i = 0; i < (size_t)31 * 41 * 31; i++)
+		v[i] = 1;
+	struct rfield f;
+	rfield_init(&f, *r, "uniform");
+	struct etch_opts o = default_opts(et, 0.1, 0.1);
+	o.pt = 0.8;
+	o.deloop = 1;
+	o.rate = *r;
+	o.seed = 2;
+	double c[2][3] = {{0, 0, 0}, {shift, 1, shift}};
+	memcpy(o.seedp, c, sizeof c);
+	memset(st, 0, sizeof *st);
+	return etch_run(&f, &o, st);
+}
+
