@@ -47,10 +47,15 @@ struct mesh *mesh_copy(const struct mesh *m)
 	if (m->ntri)
 		memcpy(c->tri, m->tri, m->ntri * sizeof *c->tri);
 	for (size_t i = 0; i < m->nnode; i++) {
+		/* the same capacity, and no array where there was none: the
+		 * mesh code grows a node's list from (NULL, 0) */
 		const struct node *n = &m->node[i];
-		c->node[i].seg = xreallocarray(NULL, (size_t)n->capseg + 1, sizeof *n->seg);
-		if (n->nseg)
-			memcpy(c->node[i].seg, n->seg, (size_t)n->nseg * sizeof *n->seg);
+		c->node[i].seg = NULL;
+		if (n->seg && n->capseg > 0) {
+			c->node[i].seg = xreallocarray(NULL, (size_t)n->capseg, sizeof *n->seg);
+			if (n->nseg)
+				memcpy(c->node[i].seg, n->seg, (size_t)n->nseg * sizeof *n->seg);
+		}
 	}
 	return c;
 }
