@@ -330,15 +330,12 @@ int mesh_can_merge(const struct mesh *m, int s, int del)
 	return 1;
 }
 
-/* Segment merging, thesis 8.4.1.2 and Figure 8.4. */
-void mesh_merge(struct mesh *m, int s, int del)
+/* The triangles around node n, each once, in a new array (*out, freed by
+ * the caller); returns their number.  Merging and welding collect them
+ * before n's segments move. */
+static int node_triangles(const struct mesh *m, int n, int **out)
 {
-	int keep = seg_other(m, s, del);
-	int tris[2] = {m->seg[s].t[0], m->seg[s].t[1]};
-	/* the triangles around del, to be given to keep at the end (a
-	 * segment of del may be gone by then, e.g. when del is the apex of
-	 * a 3-triangle fan) */
-	struct node *nd = &m->node[del];
+	const struct node *nd = &m->node[n];
 	int *around = xreallocarray(NULL, 2 * (size_t)nd->nseg + 1, sizeof *around);
 	int na = 0;
 	for (int i = 0; i < nd->nseg; i++)
@@ -349,6 +346,21 @@ void mesh_merge(struct mesh *m, int s, int del)
 			if (t >= 0 && !dup)
 				around[na++] = t;
 		}
+	*out = around;
+	return na;
+}
+
+/* Segment merging, thesis 8.4.1.2 and Figure 8.4. */
+void mesh_merge(struct mesh *m, int s, int del)
+{
+	int keep = seg_other(m, s, del);
+	int tris[2] = {m->seg[s].t[0], m->seg[s].t[1]};
+	/* the triangles around del, to be given to keep at the end (a
+	 * segment of del may be gone by then, e.g. when del is the apex of
+	 * a 3-triangle fan) */
+	struct node *nd = &m->node[del];
+	int *around;
+	int na = node_triangles(m, del, &around);
 	for (int k = 0; k < 2; k++) {
 		int t = tris[k];
 		struct triangle *tr = &m->tri[t];
@@ -439,17 +451,8 @@ int mesh_weld(struct mesh *m, int keep, int del)
 {
 	int joined = 0;
 	/* del's triangles, collected before its segments move */
-	struct node *nd = &m->node[del];
-	int *around = xreallocarray(NULL, 2 * (size_t)nd->nseg + 1, sizeof *around);
-	int na = 0;
-	for (int i = 0; i < nd->nseg; i++)
-		for (int k = 0; k < 2; k++) {
-			int t = m->seg[nd->seg[i]].t[k], dup = 0;
-			for (int j = 0; j < na; j++)
-				dup |= around[j] == t;
-			if (t >= 0 && !dup)
-				around[na++] = t;
-		}
+	int *around;
+	int na = node_triangles(m, del, &around);
 	while (m->node[del].nseg > 0) {
 		int sd = m->node[del].seg[0], x = seg_other(m, sd, del);
 		int sk = mesh_find_segment(m, keep, x);
