@@ -1,5 +1,6 @@
 #!/bin/sh
-# tests/run.sh BUILD - runs every test and prints "N passed, N failed".
+# tests/run.sh BUILD - runs every test, several at a time, and prints
+# "N passed, N failed".
 #
 # A test is either a shell script tests/<area>/NNN-name.sh or a C program
 # built from tests/<area>/<name>.c into BUILD/tests/<area>/<name>.  Each
@@ -8,8 +9,15 @@
 # is a pass, 77 a skip (a tool such as ghostscript is missing), anything
 # else a failure; a failing test's output is shown.
 #
+# Tests run TEST_JOBS at a time (default: the number of cores), the
+# slowest of the previous run first (their times are kept in
+# BUILD/test-times), but results are printed in name order as soon as
+# they are known, with a summary line when an area is complete.  The
+# printed output is the same whatever the number of jobs.
+#
 # Environment: TESTS="pattern" runs only the tests whose name contains it;
-# TEST_TIMEOUT (seconds, default 600) bounds each test.
+# TEST_TIMEOUT (seconds, default 600) bounds each test; TEST_JOBS sets the
+# number of tests run at once.
 set -u
 BUILD=${1:-build}
 TOP=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,39 +32,118 @@ unset DISPLAY
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:exitcode=99}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:exitcode=98}"
 timeout_s=${TEST_TIMEOUT:-600}
+jobs=${TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
+case $jobs in ''|*[!0-9]*|0) echo "run.sh: TEST_JOBS must be a positive integer" >&2; exit 2 ;; esac
 work=$(mktemp -d "${TMPDIR:-/tmp}/s3dtest.XXXXXX")
-trap 'rm -rf "$work"' EXIT INT TERM
+pool=""
+cleanup() {
+	[ -n "$pool" ] && kill "$pool" 2>/dev/null
+	rm -rf "$work"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
 
-pass=0 fail=0 skip=0 failed=""
-list=$( (cd "$TOP" && ls tests/*/*.sh 2>/dev/null | grep -v '^tests/\(lib\|bench\)/';
+list=$( (cd "$TOP" && ls tests/*/*.sh 2>/dev/null | grep -v '^tests/\(lib\|bench\|fuzz/corpus\)/';
          cd "$BUILD" && ls tests/*/* 2>/dev/null | grep -v '^tests/\(lib\|bench\)/') | sort)
+sel=""
 for t in $list; do
 	name=${t#tests/}
 	case $name in *.sh) ;; *) [ -x "$BUILD/$t" ] || continue ;; esac
 	if [ -n "${TESTS:-}" ]; then
 		case $name in *"$TESTS"*) ;; *) continue ;; esac
 	fi
-	dir=$work/$(echo "$name" | tr '/.' '__')
-	mkdir -p "$dir"
-	case $name in
-	*.sh) cmd="sh $TOP/$t" ;;
-	*) cmd="$BUILD/$t" ;;
-	esac
-	(cd "$dir" && timeout "$timeout_s" $cmd) >"$dir.log" 2>&1
-	st=$?
-	if [ $st -eq 0 ]; then
-		pass=$((pass + 1))
-		echo "PASS $name"
-	elif [ $st -eq 77 ]; then
-		skip=$((skip + 1))
-		echo "SKIP $name: $(tail -n 1 "$dir.log")"
+	sel="$sel $name"
+done
+ntests=$(echo $sel | wc -w)
+
+# the previous run's times (seconds) order the start, slowest first
+times=$BUILD/test-times
+[ -f "$times" ] || : >"$times" 2>/dev/null || times=/dev/null
+order=$(for name in $sel; do
+	s=$(awk -v n="$name" '$2 == n { s = $1 } END { print s + 0 }' "$times")
+	echo "$s $name"
+done | sort -k1,1nr -k2 | awk '{ print $2 }')
+est=$(for name in $sel; do echo "$name"; done |
+	awk -v j="$jobs" 'NR == FNR { t[$2] = $1; next } { s += t[$1] }
+		END { printf "%d", s / j + 0.5 }' "$times" -)
+if [ "$est" -gt 0 ]; then
+	echo "$ntests tests, $jobs at a time; the last run suggests about $est s"
+else
+	echo "$ntests tests, $jobs at a time"
+fi
+
+# one test: its log and, last, its status file (the printer waits for it)
+cat >"$work/one.sh" <<'ONE'
+work=$1 timeout_s=$2 name=$3
+id=$(echo "$name" | tr '/.' '__')
+dir=$work/$id
+mkdir -p "$dir"
+case $name in
+*.sh) set -- sh "$TOP/tests/$name" ;;
+*) set -- "$BUILD/tests/$name" ;;
+esac
+t0=$(date +%s)
+(cd "$dir" && exec timeout "$timeout_s" "$@") >"$dir.log" 2>&1 </dev/null
+st=$?
+echo "$st $(( $(date +%s) - t0 ))" >"$dir.st.tmp" && mv "$dir.st.tmp" "$dir.st"
+rm -rf "$dir"
+ONE
+( for name in $order; do echo "$name"; done |
+	xargs -P "$jobs" -n 1 sh "$work/one.sh" "$work" "$timeout_s"
+) >/dev/null 2>&1 &
+pool=$!
+
+pass=0 fail=0 skip=0 failed="" area="" apass=0 afail=0 askip=0 atime=0
+newtimes=$work/times
+area_line() {
+	[ -n "$area" ] || return 0
+	line="== $area: $apass passed, $afail failed"
+	[ $askip -gt 0 ] && line="$line, $askip skipped"
+	echo "$line ($atime s)"
+}
+for name in $sel; do
+	a=${name%%/*}
+	if [ "$a" != "$area" ]; then
+		area_line
+		area=$a apass=0 afail=0 askip=0 atime=0
+	fi
+	id=$(echo "$name" | tr '/.' '__')
+	while [ ! -f "$work/$id.st" ]; do
+		if ! kill -0 "$pool" 2>/dev/null && [ ! -f "$work/$id.st" ]; then
+			break
+		fi
+		sleep 0.2
+	done
+	if [ -f "$work/$id.st" ]; then
+		read st secs <"$work/$id.st"
 	else
-		fail=$((fail + 1))
+		st=125 secs=0
+		echo "run.sh: the test was never run" >>"$work/$id.log"
+	fi
+	echo "$secs $name" >>"$newtimes"
+	atime=$((atime + secs))
+	if [ "$st" -eq 0 ]; then
+		pass=$((pass + 1)) apass=$((apass + 1))
+		echo "PASS $name"
+	elif [ "$st" -eq 77 ]; then
+		skip=$((skip + 1)) askip=$((askip + 1))
+		echo "SKIP $name: $(tail -n 1 "$work/$id.log")"
+	else
+		fail=$((fail + 1)) afail=$((afail + 1))
 		failed="$failed $name"
 		echo "FAIL $name (exit $st)"
-		tail -n 30 "$dir.log" | sed 's/^/    /'
+		tail -n 30 "$work/$id.log" | sed 's/^/    /'
 	fi
 done
+area_line
+wait "$pool" 2>/dev/null
+pool=""
+# keep the times of this run (and of tests it did not run) for the next
+if [ "$times" != /dev/null ] && [ -f "$newtimes" ]; then
+	awk 'NR == FNR { t[$2] = $1; next } !($2 in t) { print } END { for (n in t) print t[n], n }' \
+		"$newtimes" "$times" | sort -k2 >"$times.tmp" && mv "$times.tmp" "$times"
+fi
 [ -n "$failed" ] && echo "failed:$failed"
 if [ $skip -gt 0 ]; then
 	echo "$pass passed, $fail failed, $skip skipped"
