@@ -53,6 +53,8 @@ struct etch_opts {
 	int refine_auto;        /* -refine auto: z factor from the rate array */
 	int xcheck;             /* report the distance to the fast-marching surface */
 	const char *out3d, *out2d, *outcut;
+	const char *outvtk;     /* -vtk: VTK XML PolyData, or NULL */
+	int no2d;               /* -no2d: no curves.plot.2D */
 	const char *input;
 };
 

@@ -9,6 +9,7 @@
 #include "fmm.h"
 #include "fmt_plot.h"
 #include "fmt_rate.h"
+#include "fmt_vtk.h"
 #include "num.h"
 #include "util.h"
 
@@ -23,7 +24,7 @@ static const char usage[] =
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
-	"            [-o curves.plot] [-check] [-q] rate-file\n"
+	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-q] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -49,6 +50,8 @@ static const char usage[] =
 	"                   from the standing waves (default 1: no refinement)\n"
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
+	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
+	"  -vtk file.vtp    also write the surfaces as VTK XML PolyData (ParaView)\n"
 	"  -check           check the mesh's consistency after every step\n"
 	"  -q               no progress or summary on stderr\n";
 
@@ -125,6 +128,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		    args_num(&a, "-rl", 0, 2, &o->rl) ||
 		    args_int(&a, "-clip", 1, 1000000000, &o->clip_every) ||
 		    args_str(&a, "-o", &o->out3d) ||
+		    args_str(&a, "-vtk", &o->outvtk) ||
 		    args_str(&a, "-method", &method))
 			;
 		else if (args_flag(&a, "-linear"))
@@ -147,6 +151,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->xcheck = 1;
 		else if (args_flag(&a, "-check"))
 			o->check = 1;
+		else if (args_flag(&a, "-no2d"))
+			o->no2d = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
 		else if (parse3(&a, "-seed", o->seedp[o->seed < ETCH_MAX_SEEDS ? o->seed
@@ -217,7 +223,7 @@ static void output_names(struct etch_opts *o, char **n2, char **nc)
 		sprintf(*nc, "%.*s.cut", (int)(len - 5), o->out3d);
 	else
 		sprintf(*nc, "%s.cut", o->out3d);
-	o->out2d = *n2;
+	o->out2d = o->no2d ? NULL : *n2;
 	o->outcut = o->cut_axis >= 0 ? *nc : NULL;
 }
 
@@ -414,6 +420,13 @@ int main(int argc, char **argv)
 		mesh_free(m);
 		if (o.xcheck)
 			xcheck(r, &o);
+	}
+	if (o.outvtk) {
+		/* from the plot file just written: the same surfaces whatever
+		 * the engine */
+		struct plot_file *pf = fmt_plot_read(o.out3d, 3);
+		fmt_vtk_write(o.outvtk, pf);
+		fmt_plot_free(pf);
 	}
 	fmt_rate_free(r);
 	free(n2);

@@ -3,11 +3,13 @@
  * conv(L)): a rectangular wire mesh by default (one curve per grid row and
  * per grid column), or with -t a triangular solid mesh (two triangles per
  * grid cell, each written as a closed 4-point curve), which suits pdraw's
- * hidden-line drawing.
+ * hidden-line drawing.  With -vtk it instead turns a 3D plot file of
+ * triangles (etch's curves.plot) into VTK XML PolyData for ParaView.
  */
 #include "args.h"
 #include "fmt_contour.h"
 #include "fmt_plot.h"
+#include "fmt_vtk.h"
 #include "util.h"
 
 #include <stdio.h>
@@ -16,13 +18,17 @@
 
 static const char usage[] =
 	"usage: conv [-t] [-old] [-o output-file] input-file\n"
+	"       conv -vtk [-o output-file] plot3d-file\n"
 	"  -t               triangular mesh (better for hidden lines)\n"
+	"  -vtk             a 3D plot file (triangles, lines) to VTK XML PolyData;\n"
+	"                   default output: input-file with .plot replaced by .vtp\n"
 	"  -old             read the old 50x50 contour format\n"
 	"  -o output-file   default: input-file.3D\n";
 
 struct options {
 	int triangles;
 	int old;
+	int vtk;
 	const char *output;
 	const char *input;
 };
@@ -39,6 +45,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->triangles = 1;
 		else if (args_flag(&a, "-old"))
 			o->old = 1;
+		else if (args_flag(&a, "-vtk"))
+			o->vtk = 1;
 		else if (args_str(&a, "-o", &o->output))
 			;
 		else
@@ -46,6 +54,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (!o->input)
 		args_error(&a, "no input file");
+	if (o->vtk && (o->triangles || o->old))
+		args_error(&a, "-vtk converts a plot3d file: not with -t or -old");
 	args_done(&a, NULL);
 }
 
@@ -66,10 +76,34 @@ static void point(const struct contour *c, int i, int j, double *p)
 	p[2] = c->z[(size_t)j * (size_t)c->nx + (size_t)i];
 }
 
+/* -vtk: input.plot -> input.vtp (any other name: input.vtp appended) */
+static int to_vtk(const struct options *o)
+{
+	char *outname;
+	if (o->output) {
+		outname = xstrdup(o->output);
+	} else {
+		const char *base = strcmp(o->input, "-") == 0 ? "stdin" : o->input;
+		size_t len = strlen(base);
+		outname = xmalloc(len + 5);
+		if (len > 5 && strcmp(base + len - 5, ".plot") == 0)
+			sprintf(outname, "%.*s.vtp", (int)(len - 5), base);
+		else
+			sprintf(outname, "%s.vtp", base);
+	}
+	struct plot_file *pf = fmt_plot_read(o->input, 3);
+	fmt_vtk_write(outname, pf);
+	fmt_plot_free(pf);
+	free(outname);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
+	if (o.vtk)
+		return to_vtk(&o);
 	struct contour *c = fmt_contour_read(o.input, o.old);
 
 	char *outname;
