@@ -25,6 +25,7 @@ const char plot_usage_common[] =
 	"  -noplot          no X11 preview (also -noplots)\n"
 	"  -print           send the PostScript plot to lpr\n"
 	"  -ps              no PostScript file (also POSTSCRIPT=OFF)\n"
+	"  -psfile file     the PostScript file (default dataplot.ps)\n"
 	"  -svg file        also write the picture as SVG\n"
 	"  -tl/-xl/-yl text top, x and y labels\n";
 const char plot_usage_x[] =
@@ -77,6 +78,11 @@ int plot_cmd_arg(struct args *a, struct plot_cmd *c, unsigned flags)
 	}
 	if (args_flag(a, "-ps")) {
 		c->nops = 1;
+		return 1;
+	}
+	if (args_str(a, "-psfile", &c->psfile)) {
+		if (!*c->psfile)
+			args_error(a, "-psfile needs a file name");
 		return 1;
 	}
 	if (args_str(a, "-svg", &c->svg) || args_str(a, "-tl", &c->tl) ||
@@ -180,10 +186,11 @@ void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
 	if (env && strcasecmp(env, "off") == 0)
 		s->postscript = 0;
 	s->svg = c->svg;
+	s->psfile = c->psfile ? c->psfile : PLOT_PS_FILE;
 }
 
 /* lpr -Pprinter dataplot.ps; a missing lpr is an error, not a crash. */
-static void print_ps(const char *printer)
+static void print_ps(const char *printer, const char *psfile)
 {
 	if (!printer || !*printer)
 		printer = getenv("PRINTER");
@@ -195,7 +202,7 @@ static void print_ps(const char *printer)
 		snprintf(parg, sizeof parg, "-P%s", printer);
 		argv[n++] = parg;
 	}
-	argv[n++] = PLOT_PS_FILE;
+	argv[n++] = (char *)psfile;
 	argv[n] = NULL;
 	fflush(NULL);
 	pid_t pid = fork();
@@ -213,7 +220,7 @@ static void print_ps(const char *printer)
 	if (WIFEXITED(st) && WEXITSTATUS(st) == 127)
 		exit(EXIT_RUNTIME);     /* the child said why */
 	if (!WIFEXITED(st) || WEXITSTATUS(st) != 0)
-		die("lpr failed on %s (status %d)", PLOT_PS_FILE,
+		die("lpr failed on %s (status %d)", psfile,
 		    WIFEXITED(st) ? WEXITSTATUS(st) : -1);
 }
 
@@ -254,13 +261,13 @@ void plot_output(const struct plot_settings *s, const struct plot_cmd *c,
 	struct draw *d = render(ctx);
 	if (s->postscript) {
 		struct draw_ps_opts po = {s->scale, d->w > d->h, s->toplabel};
-		draw_write_ps(d, PLOT_PS_FILE, &po);
+		draw_write_ps(d, s->psfile, &po);
 	}
 	if (s->svg)
 		draw_write_svg(d, s->svg);
 	draw_free(d);
 	if (s->postscript && (s->printplot || ask_print()))
-		print_ps(s->printer);
+		print_ps(s->printer, s->psfile);
 	else if (s->printplot)
 		die("-print needs the PostScript plot, which -ps or POSTSCRIPT=OFF turned off");
 }

@@ -30,6 +30,7 @@ struct plot_cmd {
 	int print, nops, noplot, landscape;
 	const char *tl, *xl, *yl, *zl;
 	const char *svg;            /* -svg FILE */
+	const char *psfile;         /* -psfile FILE */
 	struct draw_x11_opts x;
 };
 
@@ -44,6 +45,7 @@ struct plot_settings {
 	int ticks_set;              /* xticks or yticks came from the file */
 	int line, linechange, marker, markerchange;
 	const char *svg;
+	const char *psfile;         /* PLOT_PS_FILE unless -psfile */
 };
 
 void plot_cmd_init(struct plot_cmd *c);
