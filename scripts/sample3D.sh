@@ -13,6 +13,11 @@
 set -eu
 
 prog=sample3D
+# the programs beside this script come first (a build's bin/, or where
+# make install put them), then PATH: never another installed splat
+case $0 in
+*/*) here=$(cd "${0%/*}" && pwd) && PATH=$here:$PATH ;;
+esac
 usage() {
 	cat <<'U'
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
@@ -77,6 +82,24 @@ done
 [ -z "$rate" ] || [ -z "$splat_in$contour$bleach_in" ] ||
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
+
+# Check everything before running anything: a bad etch option must not
+# cost a splat and a bleach run and their overwritten outputs.
+[ -z "$splat_in" ] || [ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
+[ -z "$contour" ] || [ -n "$splat_in" ] || [ -r "$contour" ] ||
+	die "$contour: cannot read the contour-file"
+[ -z "$bleach_in" ] || [ -r "$bleach_in" ] || die "$bleach_in: cannot read the bleach input file"
+[ -z "$bleach_in" ] || [ -n "$contour$splat_in" ] || bad "-bf needs the aerial image: give -if or -cf"
+[ -z "$rate" ] || [ -r "$rate" ] || die "$rate: cannot read the etch-rate file"
+if [ -n "$etchtime" ]; then
+	[ -n "$rate$bleach_in" ] || bad "-et needs an etch-rate file: give -rb, -ra, or -bf"
+	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
+	if ! err=$(etch -n -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts \
+		"${rate:-rval.3D.binary}" 2>&1 >/dev/null); then
+		printf '%s\n' "$err" | head -n 1 >&2
+		exit 2
+	fi
+fi
 
 # splat: the contour-file is the one the input names (its "contour" line),
 # else splat's default splat.cont

@@ -24,7 +24,7 @@ static const char usage[] =
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
-	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-q] rate-file\n"
+	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -53,6 +53,7 @@ static const char usage[] =
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
 	"  -vtk file.vtp    also write the surfaces as VTK XML PolyData (ParaView)\n"
 	"  -check           check the mesh's consistency after every step\n"
+	"  -n               check the command line only: read and write nothing\n"
 	"  -q               no progress or summary on stderr\n";
 
 static int parse3(struct args *a, const char *opt, double v[3])
@@ -153,6 +154,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->check = 1;
 		else if (args_flag(&a, "-no2d"))
 			o->no2d = 1;
+		else if (args_flag(&a, "-n"))
+			o->dryrun = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
 		else if (parse3(&a, "-seed", o->seedp[o->seed < ETCH_MAX_SEEDS ? o->seed
@@ -382,6 +385,8 @@ int main(int argc, char **argv)
 {
 	struct etch_opts o;
 	parse_options(argc, argv, &o);
+	if (o.dryrun)
+		return 0;       /* -n: the options are good (sample3D asks first) */
 	char *n2, *nc;
 	output_names(&o, &n2, &nc);
 	struct ratefile *r = fmt_rate_read(o.input);
