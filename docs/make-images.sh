@@ -13,15 +13,20 @@ E=$TOP/examples/contact
 work=$(mktemp -d "${TMPDIR:-/tmp}/s3dimg.XXXXXX")
 trap 'rm -rf "$work"' EXIT INT TERM
 cd "$work"
-png() { # png NAME [PAGE]: dataplot.ps page PAGE (default: last) -> docs/img/NAME.png
-	n=$(grep -c '^%%Page: ' dataplot.ps)
+png() { # png NAME [PAGE] [FILE]: FILE (default dataplot.ps) page PAGE (default: last) -> docs/img/NAME.png
+	f=${3:-dataplot.ps}
+	n=$(grep -c '^%%Page: ' "$f")
 	p=${2:-$n}
 	gs -q -dSAFER -dBATCH -dNOPAUSE -sPAPERSIZE=letter -dFIXEDMEDIA -sDEVICE=png16m \
 		-dTextAlphaBits=4 -dGraphicsAlphaBits=4 -r60 -dFirstPage="$p" -dLastPage="$p" \
-		-sOutputFile="$TOP/docs/img/$1.png" dataplot.ps </dev/null
+		-sOutputFile="$TOP/docs/img/$1.png" "$f" </dev/null
 }
 drawmask -noplot -lbl "$E/mask.in"; png mask
-sample3D -q -if "$E/mask.in" -bf "$E/resist.in" -et 60 -pt 20 -solid
-contour -noplot -cstep 0.1 -tl "Aerial image, 1.25 um contact" image.cont; png aerial
+sample3D -q -if "$E/mask.in" -bf "$E/resist.in" -et 60 -pt 20 -solid -deloop
+contour -noplot -cstep 0.1 -tl "Aerial image, 1.25 um contact" -xl "x (um)" -yl "y (um)" image.cont
+png aerial
 pdraw -noplot -h -nosort -e -tl "M = 0.8 after exposure and bake" mxyz.solid.3D; png solid
-pdraw -noplot -h -e -tl "Developed resist, 20, 40, 60 s" curves.plot; png profile-20s 1; png profile-60s
+# sample3D's own pictures, as it draws them by default
+png profile-20s 1 profile.ps
+png profile-60s 3 profile.ps
+png cut "" cut.ps

@@ -22,7 +22,8 @@ usage() {
 	cat <<'U'
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
-                [-et etchtime] [-pt printtime] [-plot] [-h] [etch options] [-q]
+                [-et etchtime] [-pt printtime] [-plot] [-h] [-e | -noe]
+                [-cut x|y VALUE|mid] [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
   -bf FILE    run bleach with FILE (needs -if or -cf)
@@ -33,10 +34,14 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -et TIME    development time (s); etch runs only when it is given
   -pt TIME    print interval (s)
   -plot       interactive pdraw of the result (X11)
-  -h          hidden-line plot
+  -h          the profile as the thesis' hidden-line mesh (default: shaded)
+  -e          the profile with every axis scaled to the same length
+  -noe        the profile at true scale (default: z stretched when thin)
+  -cut x|y V  the cross-section picture's plane (default: y mid, the
+              middle of the cell); also written by etch to curves.cut
   -q          quiet: no progress lines
   etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
-              -rl L -linear -clip N -cut x|y V -method ray|fmm
+              -rl L -linear -clip N -method ray|fmm
               -etch "OPTS" passes any other etch options verbatim
   --help      this text
 U
@@ -47,7 +52,8 @@ say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
-printtime="" plot="" hidden="" quiet="" etchopts=""
+printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
+cutaxis="" cutval=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help) usage; exit 0 ;;
@@ -61,6 +67,8 @@ while [ $# -gt 0 ]; do
 	-pt) need_val "$@"; printtime=$2; shift 2 ;;
 	-plot) plot=yes; shift ;;
 	-h) hidden=-h; shift ;;
+	-e) stretch=-e; shift ;;
+	-noe) stretch="-zs 1"; shift ;;
 	-q) quiet=-q; shift ;;
 	-linear) etchopts="$etchopts -linear"; shift ;;
 	-deloop)
@@ -72,11 +80,15 @@ while [ $# -gt 0 ]; do
 	-dt|-seg|-smax|-smin|-rl|-clip|-method)
 		need_val "$@"; etchopts="$etchopts $1 $2"; shift 2 ;;
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
-		etchopts="$etchopts -cut $2 $3"; shift 3 ;;
+		cutaxis=$2 cutval=$3; shift 3 ;;
 	-etch) need_val "$@"; etchopts="$etchopts $2"; shift 2 ;;
 	*) bad "unknown option $1" ;;
 	esac
 done
+
+# the cross-section through the middle of the cell unless -cut says
+[ -n "$cutaxis" ] || cutaxis=y cutval=mid
+etchopts="$etchopts -cut $cutaxis $cutval"
 
 [ -n "$splat_in$contour$bleach_in$rate" ] || bad "nothing to do: give -if, -cf with -bf, -rb or -ra"
 [ -z "$rate" ] || [ -z "$splat_in$contour$bleach_in" ] ||
@@ -129,10 +141,43 @@ say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> 
 etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts "$rate" ||
 	die "etch failed; stopping"
 
+# The pictures (sample3D(1), PICTURES): profile.ps, the developed resist
+# as a solid block, one page per print time; cut.ps, the cross-section;
+# image.ps, the aerial image when splat ran.  dataplot.ps is the profile
+# (the thesis' name for sample3D's picture).
+times=$(awk -v et="$etchtime" -v pt="${printtime:-0}" 'BEGIN {
+	# the print times as etch takes them: every pt, and the end
+	for (k = 1; ; k++) {
+		t = pt > 0 ? k * pt : et
+		if (t > et * (1 - 1e-12)) t = et
+		printf "%s%.10g", (k > 1 ? "," : ""), t
+		if (t >= et) break
+	}
+}')
+look="-walls -shade"
+[ -z "$hidden" ] || look="-walls"
+# shellcheck disable=SC2086 # stretch and look are lists of words
 if [ -n "$plot" ]; then
-	say "pdraw $hidden curves.plot (interactive)"
-	pdraw $hidden curves.plot || die "pdraw failed"
+	say "pdraw curves.plot (interactive) -> profile.ps"
+	pdraw -h $look $stretch -times "$times" -tl "developed resist" \
+		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
+		die "pdraw failed"
 else
-	say "pdraw -noplot $hidden curves.plot -> dataplot.ps"
-	pdraw -noplot $hidden curves.plot || die "pdraw failed"
+	say "pdraw curves.plot -> profile.ps"
+	pdraw -noplot -h $look $stretch -times "$times" -tl "developed resist" \
+		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
+		die "pdraw failed"
+fi
+# the same file under the thesis' name (a link: no second copy on disk)
+rm -f dataplot.ps
+ln profile.ps dataplot.ps 2>/dev/null || cp profile.ps dataplot.ps || die "cannot write dataplot.ps"
+if [ "$cutaxis" = y ]; then across=x; else across=y; fi
+if [ "$cutval" = mid ]; then where="through the middle of the cell"; else where="$cutaxis = $cutval um"; fi
+say "drawplot curves.cut -> cut.ps"
+drawplot -noplot -section -times "$times" -tl "cross-section $where" \
+	-xl "$across (um)" -yl "z (um)" -psfile cut.ps curves.cut || die "drawplot failed"
+if [ -n "$splat_in" ]; then
+	say "contour $contour -> image.ps"
+	contour -noplot -tl "aerial image" -xl "x (um)" -yl "y (um)" -psfile image.ps "$contour" ||
+		die "contour failed"
 fi

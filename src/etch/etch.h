@@ -48,6 +48,7 @@ struct etch_opts {
 	double seedp[ETCH_MAX_SEEDS][3];
 	int cut_axis;           /* -1 none, 0 x, 1 y */
 	double cut_value;
+	int cut_mid;            /* -cut x|y mid: the box's middle */
 	enum method method;
 	int refine[3];          /* -method fmm: cell subdivisions in x, y, z */
 	int refine_auto;        /* -refine auto: z factor from the rate array */

@@ -39,6 +39,7 @@ static const char usage[] =
 	"  -clip n          clip the mesh every n steps (default 10)\n"
 	"  -deloop [n]      remove loops at every print time (and every n steps)\n"
 	"  -cut x|y value   also write the profile in the plane x (y) = value\n"
+	"                   (mid: the middle of the rate box)\n"
 	"                   to curves.cut\n"
 	"  -seed x y z      start from a seed point instead of the resist top\n"
 	"                   (repeat for several, at most 16)\n"
@@ -168,8 +169,12 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		else if (strcmp(s, "-refine") == 0)
 			parse_refine(&a, o);
 		else if (strcmp(s, "-cut") == 0) {
-			if (a.i + 2 >= argc || !num_parse(argv[a.i + 2], &o->cut_value)) {
-				args_error(&a, "option -cut needs x or y and a number");
+			if (a.i + 2 < argc && strcmp(argv[a.i + 2], "mid") == 0) {
+				o->cut_mid = 1;
+				cutaxis = argv[a.i + 1];
+				a.i += 3;
+			} else if (a.i + 2 >= argc || !num_parse(argv[a.i + 2], &o->cut_value)) {
+				args_error(&a, "option -cut needs x or y and a number (or mid)");
 				a.i = argc;
 			} else {
 				cutaxis = argv[a.i + 1];
@@ -244,8 +249,10 @@ static _Noreturn void usage_die(const char *fmt, ...)
 	exit(EXIT_USAGE);
 }
 
-static void check_inside(const struct rfield *f, const struct etch_opts *o)
+static void check_inside(const struct rfield *f, struct etch_opts *o)
 {
+	if (o->cut_axis >= 0 && o->cut_mid)     /* -cut x|y mid */
+		o->cut_value = (f->lo[o->cut_axis] + f->hi[o->cut_axis]) / 2;
 	for (int k = 0; k < o->seed; k++)
 		for (int d = 0; d < 3; d++)
 			if (o->seedp[k][d] < f->lo[d] || o->seedp[k][d] > f->hi[d])

@@ -4,6 +4,11 @@
  * limits (autorange) or the file's bounds divided into xticks/yticks,
  * optional log axes, the 11 line types and 18 markers of the guide, and
  * a template-file giving line type, marker and a legend label per curve.
+ *
+ * -section draws a resist cross-section (etch's curves.cut) as an SEM
+ * picture would show it: every set of a file (one per print time) on one
+ * page, the resist below the last set's profile filled grey, the
+ * substrate a dark band under the box floor, the profiles on top.
  */
 #include "args.h"
 #include "draw.h"
@@ -11,6 +16,7 @@
 #include "fmt_plot.h"
 #include "fmt_template.h"
 #include "plot_common.h"
+#include "num.h"
 #include "util.h"
 
 #include <math.h>
@@ -22,14 +28,17 @@ static const char usage_head[] =
 	"usage: drawplot [-o options-file] [-Pprinter] [-s scale] [-ar] [-clip] [-e] [-g]\n"
 	"                [-l] [-noplot] [-print] [-ps] [-xlog] [-ylog] [-t template-file]\n"
 	"                [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file]\n"
-	"                [X options] plot-file...\n"
+	"                [-section [-times t1,t2,...]] [X options] plot-file...\n"
 	"  -ar              no automatic axis ranging\n"
 	"  -clip            clip the curves to the plot box\n"
 	"  -e               equal x and y scales\n"
 	"  -g               draw a grid\n"
 	"  -l               landscape\n"
 	"  -xlog, -ylog     logarithmic x or y axis\n"
-	"  -t template-file line type, marker and label per curve\n";
+	"  -t template-file line type, marker and label per curve\n"
+	"  -section         a resist cross-section: all sets on one page, the resist\n"
+	"                   under the last profile filled, the substrate marked\n"
+	"  -times t1,...    with -section: the sets' print times (s), for the legend\n";
 
 /* The options-file keywords of the guide, with its ranges. */
 static const struct opt_spec spec[] = {
@@ -48,15 +57,15 @@ static const struct opt_spec spec[] = {
 
 struct options {
 	struct plot_cmd cmd;
-	int noauto, clip, equal, grid, xlog, ylog;
-	const char *templ;
+	int noauto, clip, equal, grid, xlog, ylog, section;
+	const char *templ, *times;
 	int nfiles;
 	char **files;
 };
 
 struct ctx {
 	struct plot_settings s;
-	int autorange, clip, xlog, ylog;
+	int autorange, clip, xlog, ylog, section;
 	struct template *t;
 	int nfiles;
 	struct plot_file **pf;
@@ -83,12 +92,18 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-xlog")) o->xlog = 1;
 		else if (args_flag(&a, "-ylog")) o->ylog = 1;
 		else if (args_str(&a, "-t", &o->templ)) ;
+		else if (args_flag(&a, "-section")) o->section = 1;
+		else if (args_str(&a, "-times", &o->times)) ;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_LANDSCAPE | PC_XDISPLAY)) ;
 		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
 		else o->files[o->nfiles++] = argv[a.i++];
 	}
 	if (o->nfiles == 0)
 		args_error(&a, "no plot-file");
+	if (o->times && !o->section)
+		args_error(&a, "-times goes with -section");
+	if (o->section && (o->xlog || o->ylog))
+		args_error(&a, "-section draws linear axes: not with -xlog or -ylog");
 	args_done(&a, NULL);
 }
 
@@ -207,11 +222,85 @@ static void legend(struct draw *d, const struct ctx *c, const struct plot_frame 
 	}
 }
 
+/* -section: the substrate band's height below the box floor, as a
+ * fraction of the box's height, and the greys (0 black, 1 white). */
+#define SECTION_SUBSTRATE 0.15
+#define SECTION_RESIST_GRAY 0.78
+#define SECTION_SUBSTRATE_GRAY 0.5
+
+/* One page per file: every set's profile, the resist under the last. */
+static void section_page(struct draw *d, const struct ctx *c, const struct plot_file *pf)
+{
+	const struct plot_set *first = &pf->sets[0], *last = &pf->sets[pf->nsets - 1];
+	struct plot_set frame = *first;
+	double x0 = first->bounds[0], x1 = first->bounds[1];
+	double floor = first->bounds[2], top = first->bounds[3];
+	if (!(x1 > x0))
+		extent(first, 0, 0, &x0, &x1);
+	if (!(top > floor))
+		extent(first, 1, 0, &floor, &top);
+	if (!(x1 > x0) || !(top > floor))
+		die("-section: the first set has no extent to draw");
+	frame.bounds[0] = x0, frame.bounds[1] = x1;
+	frame.bounds[2] = floor - SECTION_SUBSTRATE * (top - floor);
+	frame.bounds[3] = top;
+	struct plot_axis xa, ya;
+	make_axis(&xa, &frame, 0, 0, c->s.xticks, c->autorange);
+	make_axis(&ya, &frame, 1, 0, c->s.yticks, c->autorange);
+	struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
+	plot_frame_place(&f, d, c->s.equalscale);
+	/* the substrate: from the frame's bottom up to the box floor */
+	double fx0, fx1, fy0, fy1;
+	plot_frame_map(&f, x0, floor, &fx0, &fy1);
+	plot_frame_map(&f, x1, floor, &fx1, &fy1);
+	fy0 = f.y0;
+	double band[8] = {fx0, fy0, fx1, fy0, fx1, fy1, fx0, fy1};
+	draw_set_line(d, 1, 0.8);
+	draw_polygon(d, 4, band, SECTION_SUBSTRATE_GRAY, 1);
+	draw_text(d, (fx0 + fx1) / 2, (fy0 + fy1) / 2, LEGEND_FONT, 0, DRAW_CENTER,
+		  DRAW_MIDDLE, "substrate");
+	/* the resist left at the last print time: under each open profile,
+	 * closed along the floor (closed loops are pockets: not filled) */
+	for (int i = 0; i < last->ncurves; i++) {
+		const struct plot_curve *cv = &last->curves[i];
+		int n = cv->npts;
+		if (n < 2 || (cv->p[0] == cv->p[2 * (n - 1)] && cv->p[1] == cv->p[2 * (n - 1) + 1]))
+			continue;
+		double *xy = xreallocarray(NULL, (size_t)n + 2, 2 * sizeof *xy);
+		for (int k = 0; k < n; k++)
+			plot_frame_map(&f, cv->p[2 * k], cv->p[2 * k + 1], &xy[2 * k], &xy[2 * k + 1]);
+		plot_frame_map(&f, cv->p[2 * (n - 1)], floor, &xy[2 * n], &xy[2 * n + 1]);
+		plot_frame_map(&f, cv->p[0], floor, &xy[2 * n + 2], &xy[2 * n + 3]);
+		draw_polygon(d, n + 2, xy, SECTION_RESIST_GRAY, 0);
+		free(xy);
+	}
+	plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+	for (int si = 0; si < pf->nsets; si++) {
+		int lt, mk;
+		const char *lab;
+		style(c, si, &lt, &mk, &lab);
+		for (int i = 0; i < pf->sets[si].ncurves; i++)
+			draw_curve(d, &f, &pf->sets[si].curves[i], lt, mk);
+	}
+	legend(d, c, &f, pf->nsets);
+}
+
 static struct draw *render(void *vc)
 {
 	const struct ctx *c = vc;
 	struct draw *d = plot_new_page(c->s.landscape);
 	int first = 1;
+	if (c->section) {
+		for (int fi = 0; fi < c->nfiles; fi++) {
+			if (c->pf[fi]->nsets == 0)
+				continue;
+			if (!first)
+				draw_page(d);
+			first = 0;
+			section_page(d, c, c->pf[fi]);
+		}
+		return d;
+	}
 	for (int fi = 0; fi < c->nfiles; fi++)
 		for (int si = 0; si < c->pf[fi]->nsets; si++) {
 			const struct plot_set *st = &c->pf[fi]->sets[si];
@@ -270,6 +359,28 @@ int main(int argc, char **argv)
 		tf = v->str;
 	if (tf)
 		c.t = fmt_template_read(tf);
+	c.section = o.section;
+	if (c.section)          /* the box as it is: the fill ends at its sides */
+		c.autorange = 0;
+	if (o.times && !c.t) {
+		/* -section -times: a legend of print times, a line type each */
+		c.t = xcalloc(1, sizeof *c.t);
+		char *list = xstrdup(o.times), *save = NULL;
+		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+			double tv;
+			if (!num_parse(t, &tv))
+				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
+			c.t->e = xreallocarray(c.t->e, (size_t)c.t->n + 1, sizeof *c.t->e);
+			char f[NUM_BUFSZ], lab[64];
+			snprintf(lab, sizeof lab, "t = %s s", num_fmt(f, tv));
+			c.t->e[c.t->n] = (struct template_entry){
+				1 + c.t->n % (DRAW_NLINETYPES - 1), 0, xstrdup(lab), 0};
+			c.t->n++;
+		}
+		free(list);
+		if (c.t->n == 0)
+			die_status(EXIT_USAGE, "-times: no time given");
+	}
 
 	c.nfiles = o.nfiles;
 	c.pf = xcalloc((size_t)o.nfiles, sizeof *c.pf);

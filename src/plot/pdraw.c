@@ -32,12 +32,19 @@
 #include <string.h>
 
 static const char usage_head[] =
-	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e] [-h]\n"
+	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e]\n"
+	"             [-zs factor|auto] [-times t1,t2,...] [-h [-walls] [-shade]]\n"
 	"             [-nosort] [-noplot] [-print] [-ps] [-tl toplabel] [-xl xlabel]\n"
 	"             [-yl ylabel] [-zl zlabel] [-svg file] [X options] plotfile...\n"
 	"  -v vx vy vz      eye position (view vector), default -1 -2 1.5\n"
 	"  -e               unequal axis scales (the bounding box becomes a cube)\n"
+	"  -zs factor|auto  draw z factor times taller than x and y; auto: a box less\n"
+	"                   than 1/4 as tall as wide is made about 1/2 (1, 2, 5 steps)\n"
+	"  -times t1,...    the print times of the pages (s): each page's title says its time\n"
 	"  -h               hidden-line drawing of the polygons (closed curves)\n"
+	"  -walls           with -h: side walls from the surface's border down to\n"
+	"                   the box floor, so a resist surface looks a solid block\n"
+	"  -shade           with -h: grey polygons lit from the upper left, no mesh lines\n"
 	"  -nosort          with -h: paint the polygons in file order\n"
 	"  -zl zlabel       z label\n"
 	"  --help           this text (-h is hidden lines, as in the guide)\n"
@@ -79,6 +86,10 @@ struct options {
 	struct plot_cmd cmd;
 	double v[3];
 	int has_v, unequal, hidden, nosort;
+	double zs;          /* -zs factor, 0 for auto, 1 by default */
+	int walls;          /* -walls */
+	int shade;          /* -shade */
+	const char *times;  /* -times list */
 	int nfiles;
 	char **files;
 };
@@ -87,6 +98,11 @@ struct ctx {
 	struct plot_settings s;
 	double v[3], v0[3];
 	int hidden, nosort, unequal;
+	double zs;          /* z stretch, 0 for auto (per set) */
+	int walls;          /* -walls */
+	int shade;          /* -shade */
+	double *times;      /* -times: page i's print time */
+	int ntimes;
 	int nsets;
 	const struct plot_set **sets;
 };
@@ -97,6 +113,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	args_init(&a, argc, argv);
 	args_usage(&a, usage_head, plot_usage_common, plot_usage_x);
 	memset(o, 0, sizeof *o);
+	o->zs = 1;
 	plot_cmd_init(&o->cmd);
 	o->files = xcalloc((size_t)argc, sizeof *o->files);
 	while (a.i < argc) {
@@ -115,6 +132,15 @@ static void parse_options(int argc, char **argv, struct options *o)
 				args_error(&a, "option -v: the view vector must not be zero");
 		}
 		else if (args_flag(&a, "-e")) o->unequal = 1;
+		else if (args_flag(&a, "-walls")) o->walls = 1;
+		else if (args_flag(&a, "-shade")) o->shade = 1;
+		else if (a.i + 1 < argc && strcmp(s, "-zs") == 0 &&
+			 strcmp(argv[a.i + 1], "auto") == 0) {
+			o->zs = 0;
+			a.i += 2;
+		}
+		else if (args_num(&a, "-zs", 1e-3, 1e6, &o->zs)) ;
+		else if (args_str(&a, "-times", &o->times)) ;
 		else if (args_flag(&a, "-h")) o->hidden = 1;
 		else if (args_flag(&a, "-nosort")) o->nosort = 1;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_ZLABEL | PC_XDISPLAY)) ;
@@ -216,16 +242,42 @@ static void set_box(const struct plot_set *st, double *b)
 	}
 }
 
+/* -zs auto: when the box is less than a quarter as tall as wide (a resist
+ * film on a mask cell), the z stretch that makes it about half as tall as
+ * wide, rounded to the nearest (in ratio) 1, 2 or 5 times a power of ten;
+ * otherwise 1. */
+static double auto_stretch(const double *box)
+{
+	double wide = fmax(box[1] - box[0], box[3] - box[2]), tall = box[5] - box[4];
+	if (!(tall > 0) || !(tall * 4 < wide))
+		return 1;
+	double want = wide / 2 / tall, p = pow(10, floor(log10(want)));
+	double f = want / p;        /* 1 <= f < 10 */
+	/* nearest in ratio: the boundaries are the geometric means */
+	double step = f < sqrt(2.0) ? 1 : f < sqrt(10.0) ? 2 : f < sqrt(50.0) ? 5 : 10;
+	return step * p;
+}
+
+/* The z stretch of a set's page (1 with -e, which scales every side). */
+static double stretch_of(const struct ctx *c, const double *box)
+{
+	if (c->unequal)
+		return 1;
+	return c->zs > 0 ? c->zs : auto_stretch(box);
+}
+
 static void make_view(struct view *vw, const struct ctx *c, const double *box)
 {
 	basis(c->v, vw->e1, vw->e2, vw->w);
-	double big = 0;
+	double big = 0, zs = stretch_of(c, box);
 	for (int k = 0; k < 3; k++)
-		big = fmax(big, box[2 * k + 1] - box[2 * k]);
+		big = fmax(big, (box[2 * k + 1] - box[2 * k]) * (k == 2 ? zs : 1));
 	for (int k = 0; k < 3; k++) {
 		vw->c[k] = (box[2 * k] + box[2 * k + 1]) / 2;
-		/* -e: each side scaled to 1 (a cube); else one scale for all */
-		vw->sc[k] = 1 / (c->unequal ? box[2 * k + 1] - box[2 * k] : big);
+		/* -e: each side scaled to 1 (a cube); else one scale for all,
+		 * z stretched by -zs */
+		vw->sc[k] = c->unequal ? 1 / (box[2 * k + 1] - box[2 * k])
+				       : (k == 2 ? zs : 1) / big;
 	}
 	double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
 	for (int i = 0; i < 8; i++) {
@@ -246,11 +298,48 @@ static void make_view(struct view *vw, const struct ctx *c, const double *box)
 
 /* ---- axes ---- */
 
+/* The page boxes of the texts an axis frame has placed, so that a tick
+ * label that would overlap another text is left out rather than drawn on
+ * top of it (axis titles are placed first and always drawn).  Widths are
+ * estimated from Helvetica's mean advance, 0.56 of the font size. */
+#define TEXT_ADVANCE 0.56
+#define MAX_TEXTS 128
+struct texts {
+	int n;
+	double box[MAX_TEXTS][4];
+};
+
+static void text_box(double x, double y, double size, double angle, const char *s, double *b)
+{
+	double w = TEXT_ADVANCE * size * (double)strlen(s) / 2 + 1, h = size / 2 + 1;
+	double ca = fabs(cos(angle * M_PI / 180)), sa = fabs(sin(angle * M_PI / 180));
+	double hw = w * ca + h * sa, hh = w * sa + h * ca;
+	b[0] = x - hw, b[1] = y - hh, b[2] = x + hw, b[3] = y + hh;
+}
+
+/* Places a centred text unless it overlaps one placed before (force:
+ * always); returns whether it was drawn. */
+static int place_text(struct draw *d, struct texts *tx, double x, double y, double size,
+		      double angle, const char *s, int force)
+{
+	double b[4];
+	text_box(x, y, size, angle, s, b);
+	if (!force)
+		for (int i = 0; i < tx->n; i++)
+			if (b[0] < tx->box[i][2] && tx->box[i][0] < b[2] &&
+			    b[1] < tx->box[i][3] && tx->box[i][1] < b[3])
+				return 0;
+	if (tx->n < MAX_TEXTS)
+		memcpy(tx->box[tx->n++], b, sizeof b);
+	draw_text(d, x, y, size, angle, DRAW_CENTER, DRAW_MIDDLE, s);
+	return 1;
+}
+
 /* One axis along the box edge from p0 (at the axis' low end) in direction
  * k, ticks pointing along out (unit box units). */
 static void axis3(struct draw *d, const struct view *vw, const double *box, int k,
 		  const double *p0, const double *out, int ndiv, const char *label,
-		  double angle)
+		  double angle, struct texts *tx, int pass)
 {
 	struct plot_axis ax;
 	plot_axis_linear(&ax, box[2 * k], box[2 * k + 1], ndiv, 0);
@@ -258,6 +347,17 @@ static void axis3(struct draw *d, const struct view *vw, const double *box, int 
 	memcpy(a, p0, sizeof a);
 	memcpy(b, p0, sizeof b);
 	a[k] = box[2 * k], b[k] = box[2 * k + 1];
+	if (pass == 0) {       /* the title first: it is always drawn */
+		if (label && *label) {
+			double m[3];
+			for (int j = 0; j < 3; j++)
+				m[j] = (a[j] + b[j]) / 2 + out[j] * 7 * TICK_FRAC / vw->sc[j];
+			double lx, ly;
+			to_page(vw, m, &lx, &ly);
+			place_text(d, tx, lx, ly, FONT_LABEL, angle, label, 1);
+		}
+		return;
+	}
 	to_page(vw, a, &x0, &y0);
 	to_page(vw, b, &x1, &y1);
 	draw_set_line(d, 1, 0.8);
@@ -276,15 +376,7 @@ static void axis3(struct draw *d, const struct view *vw, const double *box, int 
 		to_page(vw, t, &qx, &qy);
 		to_page(vw, tl, &lx, &ly);
 		draw_segment(d, px, py, qx, qy);
-		draw_text(d, lx, ly, FONT_TICK, 0, DRAW_CENTER, DRAW_MIDDLE, ax.label[i]);
-	}
-	if (label && *label) {
-		double m[3];
-		for (int j = 0; j < 3; j++)
-			m[j] = (a[j] + b[j]) / 2 + out[j] * 7 * TICK_FRAC / vw->sc[j];
-		double lx, ly;
-		to_page(vw, m, &lx, &ly);
-		draw_text(d, lx, ly, FONT_LABEL, angle, DRAW_CENTER, DRAW_MIDDLE, label);
+		place_text(d, tx, lx, ly, FONT_TICK, 0, ax.label[i], 0);
 	}
 }
 
@@ -306,9 +398,22 @@ static void axes(struct draw *d, const struct view *vw, const double *box, const
 	/* z ticks point to the screen's left, in the x-y plane */
 	if (!normalize3(oz))
 		oz[0] = -sx;
-	axis3(d, vw, box, 0, px, ox, c->s.xticks, c->s.xlabel, 0);
-	axis3(d, vw, box, 1, py, oy, c->s.yticks, c->s.ylabel, 0);
-	axis3(d, vw, box, 2, pz, oz, c->s.zticks, c->s.zlabel, 90);
+	/* the z title says how much z is stretched */
+	double zs = stretch_of(c, box);
+	char zlabel[256];
+	if (zs != 1 && c->s.zlabel && *c->s.zlabel) {
+		char f[NUM_BUFSZ];
+		snprintf(zlabel, sizeof zlabel, "%.200s, stretched %sx", c->s.zlabel,
+			 num_fmt(f, zs));
+	} else {
+		snprintf(zlabel, sizeof zlabel, "%.250s", c->s.zlabel ? c->s.zlabel : "");
+	}
+	struct texts tx = {0};
+	for (int pass = 0; pass < 2; pass++) {
+		axis3(d, vw, box, 0, px, ox, c->s.xticks, c->s.xlabel, 0, &tx, pass);
+		axis3(d, vw, box, 1, py, oy, c->s.yticks, c->s.ylabel, 0, &tx, pass);
+		axis3(d, vw, box, 2, pz, oz, c->s.zticks, zlabel, 90, &tx, pass);
+	}
 }
 
 /* ---- hidden lines: BSP painter ---- */
@@ -317,6 +422,7 @@ struct frag {
 	int n;              /* vertices (2 for a segment) */
 	int curve;          /* the curve it comes from (its line style) */
 	int seg;            /* an open-curve segment: never a splitter */
+	double gray;        /* fill: 1 white (the surface), less for walls */
 	int hasplane;
 	double pl[4];       /* plane n.p + d = 0, |n| = 1 (view coordinates) */
 	double *p;          /* 3n view coordinates */
@@ -329,6 +435,7 @@ static struct frag *frag_new(int n, int curve, int seg)
 	f->n = n;
 	f->curve = curve;
 	f->seg = seg;
+	f->gray = 1.0;
 	f->p = xreallocarray(NULL, (size_t)n, 3 * sizeof *f->p);
 	f->orig = xcalloc((size_t)n, 1);
 	return f;
@@ -375,6 +482,7 @@ static struct frag *clip_part(const struct frag *f, const double *pl, const int 
 {
 	int cap = f->n * 2 + 2, m = 0;
 	struct frag *o = frag_new(cap, f->curve, f->seg);
+	o->gray = f->gray;
 	int nedge = f->seg ? 1 : f->n;
 	for (int i = 0; i < nedge; i++) {
 		int j = (i + 1) % f->n;
@@ -555,7 +663,17 @@ static void paint_frag(struct draw *d, const struct view *vw, const struct ctx *
 		free(xy);
 		return;
 	}
-	draw_polygon(d, f->n, xy, 1.0, 0);
+	if (c->shade) {
+		/* a hairline of the fill's own grey closes the seams that an
+		 * anti-aliasing viewer shows between adjacent fills */
+		draw_set_line(d, 1, 0.25);
+		draw_set_gray(d, f->gray);
+		draw_polygon(d, f->n, xy, f->gray, 1);
+		draw_set_gray(d, 0);
+		draw_set_line(d, curve_linetype(c, f->curve), 0.6);
+	} else {
+		draw_polygon(d, f->n, xy, f->gray, 0);
+	}
 	/* stroke the runs of original edges */
 	int start = 0;
 	while (start < f->n && f->orig[start])
@@ -586,8 +704,67 @@ static void paint_frag(struct draw *d, const struct view *vw, const struct ctx *
 	free(xy);
 }
 
+/* -walls: the resist block's side walls.  An edge of a surface polygon
+ * lying in one of the box's side planes (x or y at a bound) is extended
+ * down to the box's floor as a grey quadrilateral, so the developed
+ * surface is seen as the top of a solid block, not a sheet in the air.
+ * Only the floor edge is stroked, and the vertical edges at the box's
+ * corners, so the wall does not show the mesh. */
+#define WALL_GRAY 0.82
+static int on_side(const double *p, const double *box, int k)
+{
+	double eps = 1e-9 * (box[2 * k + 1] - box[2 * k]);
+	if (fabs(p[k] - box[2 * k]) <= eps)
+		return 1;
+	if (fabs(p[k] - box[2 * k + 1]) <= eps)
+		return 2;
+	return 0;
+}
+
+static void add_walls(struct list *all, const struct view *vw, const double *box,
+		      const struct plot_curve *cv, int curve)
+{
+	for (int e = 0; e + 1 < cv->npts; e++) {
+		const double *a = cv->p + 3 * e, *b = cv->p + 3 * e + 3;
+		for (int k = 0; k < 2; k++) {
+			int sa = on_side(a, box, k);
+			if (!sa || sa != on_side(b, box, k))
+				continue;
+			if (a[2] <= box[4] && b[2] <= box[4])
+				continue;       /* on the floor: no wall */
+			double q[4][3] = {{a[0], a[1], a[2]}, {b[0], b[1], b[2]},
+					  {b[0], b[1], box[4]}, {a[0], a[1], box[4]}};
+			struct frag *f = frag_new(4, curve, 0);
+			f->gray = WALL_GRAY;
+			for (int j = 0; j < 4; j++)
+				to_view(vw, q[j], f->p + 3 * j);
+			f->orig[2] = 1;         /* the floor edge */
+			f->orig[1] = on_side(b, box, 1 - k) != 0;   /* a box corner */
+			f->orig[3] = on_side(a, box, 1 - k) != 0;
+			frag_plane(f);
+			list_add(all, f);
+		}
+	}
+}
+
+/* -shade: a polygon's grey from its facing (Lambert, a light from the
+ * upper left behind the eye), in view coordinates, so the shading follows
+ * the picture as drawn (z stretched or not). */
+#define SHADE_AMBIENT 0.3
+static double shade(const struct frag *f)
+{
+	static const double light[3] = {-0.42, 0.56, 0.71};   /* unit length */
+	if (!f->hasplane)
+		return 1.0;
+	double n[3] = {f->pl[0], f->pl[1], f->pl[2]};
+	if (n[2] < 0)                   /* the side turned to the eye */
+		n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
+	double l = dot3(n, light);
+	return SHADE_AMBIENT + (1 - SHADE_AMBIENT) * (l > 0 ? l : 0);
+}
+
 static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx *c,
-			const struct plot_set *st)
+			const struct plot_set *st, const double *box)
 {
 	struct list all = {0};
 	for (int i = 0; i < st->ncurves; i++) {
@@ -599,7 +776,13 @@ static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx 
 				f->orig[k] = 1;
 			}
 			frag_plane(f);
+			if (c->shade) {
+				f->gray = shade(f);
+				memset(f->orig, 0, (size_t)f->n);
+			}
 			list_add(&all, f);
+			if (c->walls)
+				add_walls(&all, vw, box, cv, i);
 		} else {
 			for (int k = 0; k + 1 < cv->npts; k++) {
 				struct frag *f = frag_new(2, i, 1);
@@ -613,19 +796,28 @@ static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx 
 	painter(d, vw, c, all, paint_frag);
 }
 
-static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set *st)
+static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set *st,
+		     int page)
 {
 	double box[6];
 	set_box(st, box);
 	struct view vw;
 	make_view(&vw, c, box);
-	if (c->s.toplabel && *c->s.toplabel)
+	char title[320];
+	snprintf(title, sizeof title, "%.250s", c->s.toplabel ? c->s.toplabel : "");
+	if (page < c->ntimes) {
+		char f[NUM_BUFSZ];
+		size_t n = strlen(title);
+		snprintf(title + n, sizeof title - n, "%st = %s s", n ? ", " : "",
+			 num_fmt(f, c->times[page]));
+	}
+	if (*title)
 		draw_text(d, d->w / 2, AREA_Y1 + 40, FONT_TOP, 0, DRAW_CENTER, DRAW_BOTTOM,
-			  c->s.toplabel);
+			  title);
 	if (!c->hidden)
 		axes(d, &vw, box, c);
 	if (c->hidden && !c->nosort) {
-		draw_hidden(d, &vw, c, st);
+		draw_hidden(d, &vw, c, st, box);
 	} else {
 		for (int i = 0; i < st->ncurves; i++) {
 			const struct plot_curve *cv = &st->curves[i];
@@ -662,7 +854,7 @@ static struct draw *render(void *vc)
 	for (int i = 0; i < c->nsets; i++) {
 		if (i)
 			draw_page(d);
-		draw_set(d, c, c->sets[i]);
+		draw_set(d, c, c->sets[i], i);
 	}
 	return d;
 }
@@ -725,6 +917,22 @@ int main(int argc, char **argv)
 	c.hidden = o.hidden || ((v = plot_opt(spec, val, "hiddenline")) && v->num);
 	c.nosort = o.nosort || ((v = plot_opt(spec, val, "nosort")) && v->num);
 	c.unequal = o.unequal || !c.s.equalscale;
+	c.zs = o.zs;
+	c.walls = o.walls;
+	c.shade = o.shade;
+	if ((c.walls || c.shade) && !c.hidden)
+		die_status(EXIT_USAGE, "-walls and -shade go with a hidden-line plot: add -h");
+	if (o.times) {
+		/* a comma-separated list of times, one per page */
+		char *list = xstrdup(o.times), *save = NULL;
+		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+			c.times = xreallocarray(c.times, (size_t)c.ntimes + 1, sizeof *c.times);
+			if (!num_parse(t, &c.times[c.ntimes]))
+				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
+			c.ntimes++;
+		}
+		free(list);
+	}
 	memcpy(c.v0, o.has_v ? o.v : DEFAULT_VIEW, sizeof c.v0);
 	memcpy(c.v, c.v0, sizeof c.v);
 
@@ -742,6 +950,7 @@ int main(int argc, char **argv)
 		fmt_plot_free(pf[i]);
 	free(pf);
 	free(c.sets);
+	free(c.times);
 	fmt_options_free(spec, val);
 	free(o.files);
 	return 0;

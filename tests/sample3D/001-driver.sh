@@ -25,6 +25,7 @@ done
 [ ! -e rval.3D ] || fail "rval.3D written without -ascii"
 [ "$(grep -c '^$' curves.plot)" -eq 1 ] || fail "-pt 10 -et 20: expected two sets in curves.plot"
 grep -q '^%%Pages: 2' dataplot.ps || fail "dataplot.ps should have a page per print time"
+grep -q '(developed resist, t = 20 s)' profile.ps || fail "profile.ps: no page titled t = 20 s"
 
 mkdir b && cd b
 sample3D -q -cf ../img.cont -bf ../resist.in -ascii || fail "bleach-only run failed"
@@ -38,9 +39,18 @@ sample3D -q -rb ../rval.3D.binary -et 10 -linear -dt 0.5 || fail "etch-only run 
 same curves.plot ascii.plot
 cd ..
 
-# progress: one line per stage (splat, bleach, etch, pdraw) from the driver
+# progress: one line per stage (splat, bleach, etch, and the three
+# pictures: pdraw, drawplot, contour) from the driver
 sample3D -if mask.in -bf resist.in -et 5 2>log >/dev/null || fail "run with progress failed"
-[ "$(grep -c '^sample3D: ' log)" -eq 4 ] || fail "expected 4 progress lines: $(grep '^sample3D' log)"
+[ "$(grep -c '^sample3D: ' log)" -eq 6 ] || fail "expected 6 progress lines: $(grep '^sample3D' log)"
+# the pictures, named after their content; the print time in each page's
+# title; dataplot.ps is the profile
+for f in profile.ps cut.ps image.ps dataplot.ps curves.cut; do
+	[ -s $f ] || fail "$f missing"
+done
+same profile.ps dataplot.ps
+grep -q '(developed resist, t = 5 s)' profile.ps || fail "profile.ps does not title its page with the print time"
+grep -q '(t = 5 s)' cut.ps || fail "cut.ps has no legend of print times"
 
 # a failing stage: a broken bleach input stops before etch, keeps splat's image
 mkdir c && cd c
