@@ -315,6 +315,14 @@ struct splat_input *fmt_splat_read(const char *path)
 			die("%s:%ld: rect is outside the window of line %ld",
 			    lex_name(lx), r->line, window_line);
 	}
+	/* an image stack holds planes * nx * ny values: bound it as one grid */
+	if (in->planes &&
+	    (double)in->planes * in->nx * in->ny > (double)SPLAT_MAX_GRID * SPLAT_MAX_GRID)
+		die("%s:%ld: resist: %d planes of %dx%d points are %.3g values (%.3g GB), "
+		    "more than %d x %d: use fewer planes or a coarser grid", lex_name(lx),
+		    in->resist_line, in->planes, in->nx, in->ny,
+		    (double)in->planes * in->nx * in->ny,
+		    8e-9 * in->planes * in->nx * in->ny, SPLAT_MAX_GRID, SPLAT_MAX_GRID);
 	if (!in->contour)
 		in->contour = xstrdup("splat.cont");
 	lex_close(lx);

@@ -59,6 +59,10 @@ static void tcc(const struct pupil *p, const struct source *s,
 /* Below this the source sends no light through the pupil (an annulus or
  * poles entirely outside NA): relative to the area of the pupil. */
 static const double NORM_MIN = 1e-12;
+/* Most memory for the planes' spectra of an image stack, bytes: a single
+ * image's spectrum is far smaller than its grid, but a thousand planes of
+ * a large window would not be. */
+static const double STACK_SPECTRA_MAX = 2e9;
 
 struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      const struct source *s, const struct quad *q)
@@ -73,13 +77,20 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 		free(t);
 		return NULL;
 	}
+	size_t w = 4 * (size_t)o->mmax + 1, h = 4 * (size_t)o->nmax + 1;
+	double bytes = (double)w * h * np * sizeof(double complex);
+	if (np > 1 && bytes > STACK_SPECTRA_MAX) {
+		free(t);
+		die("the spectra of %d planes need %.3g GB, more than %g: use fewer planes "
+		    "in the resist statement, or a smaller window", np, bytes / 1e9,
+		    STACK_SPECTRA_MAX / 1e9);
+	}
 	struct spectrum *sp = xcalloc(1, sizeof *sp);
 	sp->lx = o->lx;
 	sp->ly = o->ly;
 	sp->mmax = o->mmax;
 	sp->nmax = o->nmax;
 	sp->nplanes = np;
-	size_t w = 4 * (size_t)o->mmax + 1, h = 4 * (size_t)o->nmax + 1;
 	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
 	for (int i = 0; i < o->n; i++) {
 		if (o->c[i] == 0)

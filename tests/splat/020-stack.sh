@@ -12,7 +12,9 @@
 #    stack reader refuses malformed stacks with one line naming file:line
 #    (wrong counts, depths out of order or not reaching the thickness,
 #    a plane on another window or grid, NaN, truncation, trailing data);
-#  - bad resist statements are one-line errors naming the line.
+#  - bad resist statements are one-line errors naming the line, and a
+#    stack beyond the grid's limit (planes x nx x ny values) or whose
+#    spectra would need more than 2 GB is refused with the estimate.
 . "$TOP/tests/lib/common.sh"
 PATH=$BUILD/tests/lib:$PATH
 cat >base.in <<'IN'
@@ -106,6 +108,14 @@ badin "resist thickness 1 index nan planes 3"
 badin "resist thickness 1 thickness 1 planes 3"
 badin "resist thickness 1 index 1.6 dill 3"
 badin "resist thickness 1 index 1.6 planes 3 extra"
+# beyond the limits: refused with the estimate, nothing allocated
+printf 'window 0 1 0 1\ngrid 10001 10001\nresist thickness 1 index 1.5 planes 3\n' >big.in
+expect_file_error splat big.in -q -o big.cont big.in
+grep -q 'GB' err.txt || fail "no size estimate: $(cat err.txt)"
+printf 'window 0 300 0 300\nna 0.9\nwavelength 0.193\ngrid 3 3\nresist thickness 1 index 1.5 planes 1001\n' >big2.in
+expect_error splat -q -o big2.cont big2.in
+grep -q 'GB.*fewer planes' err.txt || fail "no spectra estimate: $(cat err.txt)"
+[ ! -e big2.cont ] || fail "output written beyond the limit"
 # a later resist statement replaces an earlier one, as every statement
 { cat base.in; echo "resist thickness 1 index 1.6 planes 5"; echo "resist thickness 0.1 index 1.6 planes 3"; } >twice.in
 splat -q -o twice.cont twice.in || fail "two resist statements"
