@@ -8,7 +8,8 @@
 #    nothing) included: 1e-9 (the formula is evaluated in closed form;
 #    the trapezoidal optical depth of B alone is exact to rounding);
 #  - a stack whose planes all equal one image gives that image's rate
-#    file: byte for byte without bake, to 1e-12 with a 3D bake (the z
+#    file: byte for byte without bake (also resampled by "grid nx ny"),
+#    to 1e-12 with a 3D bake (the z
 #    bake then smooths the M array rather than the dose table: the same
 #    linear map, another order of sums);
 #  - the deeper planes matter: a stack darker at the bottom leaves more
@@ -86,6 +87,12 @@ awk 'BEGIN { n = 9; print "-1 1 -1 1"; print n, n
 bleach -q -ascii -o a.txt img.cont ol.in || fail "plain image"
 bleach -q -ascii -o b.txt same.cont ol.in || fail "stack of equal planes"
 same a.txt b.txt
+# the same through "grid nx ny" resampling
+{ cat ol.in; echo "grid nx 5 ny 4 nz 41"; } | grep -v '^grid nz 61' >olr.in
+bleach -q -ascii -o a.txt img.cont olr.in || fail "plain image, resampled"
+bleach -q -ascii -o b.txt same.cont olr.in || fail "stack of equal planes, resampled"
+same a.txt b.txt
+sed -n 2p b.txt | grep -q '^5 4 41 2$' || fail "resampled stack: header $(sed -n 2p b.txt)"
 { cat ol.in; echo "bake3d diffusion 0.05"; } >olb.in
 bleach -q -ascii -o a.txt img.cont olb.in || fail "plain image, bake3d"
 bleach -q -ascii -o b.txt same.cont olb.in || fail "stack of equal planes, bake3d"
