@@ -197,7 +197,8 @@ size_t surf_line_spans(const struct surf *s, const struct surf_section *sec,
 			cut[n++] = pos;
 		}
 	}
-	qsort(cut, n, sizeof *cut, cmp_double);
+	if (n)
+		qsort(cut, n, sizeof *cut, cmp_double);
 	size_t m = spans_from_cuts(s, sec->z, axis, c, cut, n, s->box[2 * axis],
 				   s->box[2 * axis + 1], spans, cap);
 	free(cut);
@@ -293,7 +294,8 @@ double surf_region_area(const struct surf *s, const struct surf_section *sec,
 			for (long l = 0; l < nl; l++) {
 				double *c = cuts + start[l];
 				size_t n = start[l + 1] - start[l];
-				qsort(c, n, sizeof *c, cmp_double);
+				if (n)
+					qsort(c, n, sizeof *c, cmp_double);
 				size_t m = spans_from_cuts(s, sec->z, 0, line_y(y, h, l + j0), c, n,
 							   box[0], box[1], &sp, &spcap);
 				lstart[l] = ndev;
