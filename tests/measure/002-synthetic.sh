@@ -7,6 +7,7 @@
 #   - an undercut space (bottom 0.9, top 0.5 um: swa above 90),
 #   - a hole that does not clear (bottom at -0.4 um, cd 0 below),
 #   - a hole and a line with 0.05 um of resist loss.
+# -plot writes the table's cd against z.
 # Expected: cd within 0.5 % (the issue's tolerance; a 256-sided polygon
 # stands for the cone's circle, 1e-4 off), swa within 0.3 degree, resist
 # loss within 1e-6 um, cleared exactly.
@@ -42,6 +43,16 @@ awk '!/^#/ && $1 == -0.35 { if ($4 < 0.899 || $4 > 0.9001 || $5 < 0.899 || $5 > 
 # the same hole measured from off its centre, and by -at
 measure -at -0.35 -hole 0.2 -0.1 cone.plot >off.txt || fail "measure off-centre"
 check off.txt -0.35 0.9
+
+# -plot: one set, one curve of (z, cd) in increasing z, the table's values
+measure -rel 90,10,50 -hole 0 0 -plot cd.plot cone.plot >plot.txt || fail "measure -plot"
+awk 'NR == 1 { if ($1 != -0.7 || $2 != 0 || $3 != 0 || $4 <= 1.14) exit 1; next }
+	NR == 2 || NR == 3 { if ($1 != (NR == 2 ? 1 : 3)) exit 1; next }
+	{ if (NR > 4 && $1 <= z) exit 1; z = $1; n++ } END { exit n != 3 }' cd.plot ||
+	fail "cd.plot is not one curve of 3 points in increasing z: $(cat cd.plot)"
+awk 'NR == FNR { if (!/^#/) cd[sprintf("%.6f", $1)] = $2; next }
+	FNR > 3 { d = cd[sprintf("%.6f", $1)] - $2; if (d > 1e-6 || d < -1e-6) exit 1 }' plot.txt cd.plot ||
+	fail "cd.plot differs from the table: $(cat cd.plot plot.txt)"
 
 # trapezoidal line along y: width 0.8 - 0.3 (z + 0.7) / 0.7
 synth -v kind=ext -v prof="-2.5 -0.7 -0.4 -0.7 -0.25 0 0.25 0 0.4 -0.7 2.5 -0.7" -v seed=3 >line.plot
