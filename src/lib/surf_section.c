@@ -241,6 +241,47 @@ static void uf_join(size_t *parent, size_t a, size_t b)
 /* The lines of surf_region_area: y_j = y + j h for j in [j0, j1]. */
 static double line_y(double y, double h, long j) { return y + (double)j * h; }
 
+/* The cut positions of the nl lines from j0 on, bucketed by line: those
+ * of line l are cut[start[l]] to cut[start[l + 1] - 1], sorted.  Each
+ * segment is only tried on the lines its y range spans. */
+static double *bucket_cuts(const struct surf_section *sec, double y, double h,
+			   long j0, long nl, size_t *start)
+{
+	double *cut = NULL;
+	size_t *fill = NULL;
+	memset(start, 0, ((size_t)nl + 1) * sizeof *start);
+	for (int pass = 0; pass < 2; pass++) {
+		if (pass == 1) {
+			for (long l = 0; l < nl; l++)
+				start[l + 1] += start[l];
+			cut = xreallocarray(NULL, start[nl] ? start[nl] : 1, sizeof *cut);
+			fill = xreallocarray(NULL, (size_t)nl, sizeof *fill);
+			memcpy(fill, start, (size_t)nl * sizeof *fill);
+		}
+		for (size_t k = 0; k < sec->nseg; k++) {
+			const double *a = sec->seg + 4 * k, *b = a + 2;
+			double ya = fmin(a[1], b[1]), yb = fmax(a[1], b[1]);
+			long ja = (long)floor((ya - y) / h) - 1, jb = (long)ceil((yb - y) / h) + 1;
+			ja = ja < j0 ? j0 : ja;
+			jb = jb > j0 + nl - 1 ? j0 + nl - 1 : jb;
+			for (long j = ja; j <= jb; j++) {
+				double pos;
+				if (!seg_cut(a, b, 0, line_y(y, h, j), &pos))
+					continue;
+				if (pass == 0)
+					start[j - j0 + 1]++;
+				else
+					cut[fill[j - j0]++] = pos;
+			}
+		}
+	}
+	free(fill);
+	for (long l = 0; l < nl; l++)
+		if (start[l + 1] > start[l])
+			qsort(cut + start[l], start[l + 1] - start[l], sizeof *cut, cmp_double);
+	return cut;
+}
+
 double surf_region_area(const struct surf *s, const struct surf_section *sec,
 			double x, double y, double h, int *edge)
 {
@@ -254,106 +295,70 @@ double surf_region_area(const struct surf *s, const struct surf_section *sec,
 	*edge = 0;
 	if (nl <= 0)
 		return 0;
-	/* the cut positions of every line, bucketed by line (CSR) */
-	size_t *start = xcalloc((size_t)nl + 1, sizeof *start);
-	for (int pass = 0; pass < 2; pass++) {
-		double *cuts = NULL;
-		size_t *fill = NULL;
-		if (pass == 1) {
-			for (long l = 0; l < nl; l++)
-				start[l + 1] += start[l];
-			cuts = xreallocarray(NULL, start[nl] ? start[nl] : 1, sizeof *cuts);
-			fill = xreallocarray(NULL, (size_t)nl, sizeof *fill);
-			memcpy(fill, start, (size_t)nl * sizeof *fill);
-		}
-		for (size_t k = 0; k < sec->nseg; k++) {
-			const double *a = sec->seg + 4 * k, *b = a + 2;
-			double ya = fmin(a[1], b[1]), yb = fmax(a[1], b[1]);
-			long ja = (long)floor((ya - y) / h) - 1, jb = (long)ceil((yb - y) / h) + 1;
-			if (ja < j0)
-				ja = j0;
-			if (jb > j1)
-				jb = j1;
-			for (long j = ja; j <= jb; j++) {
-				double pos;
-				if (!seg_cut(a, b, 0, line_y(y, h, j), &pos))
-					continue;
-				if (pass == 0)
-					start[j - j0 + 1]++;
-				else
-					cuts[fill[j - j0]++] = pos;
+	size_t *start = xreallocarray(NULL, (size_t)nl + 1, sizeof *start);
+	double *cut = bucket_cuts(sec, y, h, j0, nl, start);
+
+	/* the developed spans of every line: dev[lstart[l] .. lstart[l+1]-1] */
+	struct surf_span *sp = NULL, *dev = NULL;
+	size_t spcap = 0, devcap = 0, ndev = 0;
+	size_t *lstart = xreallocarray(NULL, (size_t)nl + 1, sizeof *lstart);
+	for (long l = 0; l < nl; l++) {
+		size_t m = spans_from_cuts(s, sec->z, 0, line_y(y, h, l + j0), cut + start[l],
+					   start[l + 1] - start[l], box[0], box[1], &sp, &spcap);
+		lstart[l] = ndev;
+		for (size_t k = 0; k < m; k++)
+			if (!sp[k].resist) {
+				xgrow(&dev, &devcap, ndev + 1, sizeof *dev);
+				dev[ndev++] = sp[k];
 			}
-		}
-		if (pass == 1) {
-			free(fill);
-			/* spans of every line; keep the developed ones */
-			struct surf_span *sp = NULL, *dev = NULL;
-			size_t spcap = 0, devcap = 0, ndev = 0;
-			size_t *lstart = xreallocarray(NULL, (size_t)nl + 1, sizeof *lstart);
-			long jy = -j0; /* the line through y */
-			for (long l = 0; l < nl; l++) {
-				double *c = cuts + start[l];
-				size_t n = start[l + 1] - start[l];
-				if (n)
-					qsort(c, n, sizeof *c, cmp_double);
-				size_t m = spans_from_cuts(s, sec->z, 0, line_y(y, h, l + j0), c, n,
-							   box[0], box[1], &sp, &spcap);
-				lstart[l] = ndev;
-				for (size_t k = 0; k < m; k++)
-					if (!sp[k].resist) {
-						xgrow(&dev, &devcap, ndev + 1, sizeof *dev);
-						dev[ndev++] = sp[k];
-					}
-			}
-			lstart[nl] = ndev;
-			free(sp);
-			free(cuts);
-			size_t *parent = xreallocarray(NULL, ndev ? ndev : 1, sizeof *parent);
-			for (size_t k = 0; k < ndev; k++)
-				parent[k] = k;
-			for (long l = 0; l + 1 < nl; l++) {
-				size_t a = lstart[l], b = lstart[l + 1];
-				while (a < lstart[l + 1] && b < lstart[l + 2]) {
-					if (fmax(dev[a].lo, dev[b].lo) < fmin(dev[a].hi, dev[b].hi))
-						uf_join(parent, a, b);
-					if (dev[a].hi < dev[b].hi)
-						a++;
-					else
-						b++;
-				}
-			}
-			double area = 0;
-			size_t root = (size_t)-1;
-			for (size_t k = lstart[jy]; k < lstart[jy + 1]; k++)
-				if (dev[k].lo <= x && x < dev[k].hi) {
-					root = uf_find(parent, k);
-					break;
-				}
-			if (root != (size_t)-1)
-				for (long l = 0; l < nl; l++) {
-					double yl = line_y(y, h, l + j0);
-					double b0 = fmax(box[2], yl - 0.5 * h), b1 = fmin(box[3], yl + 0.5 * h);
-					if (l == 0)
-						b0 = box[2];
-					if (l == nl - 1)
-						b1 = box[3];
-					for (size_t k = lstart[l]; k < lstart[l + 1]; k++) {
-						if (uf_find(parent, k) != root)
-							continue;
-						area += (dev[k].hi - dev[k].lo) * (b1 - b0);
-						if (dev[k].lo <= box[0] || dev[k].hi >= box[1] ||
-						    l == 0 || l == nl - 1)
-							*edge = 1;
-					}
-				}
-			free(parent);
-			free(lstart);
-			free(dev);
-			free(start);
-			return area;
+	}
+	lstart[nl] = ndev;
+	free(sp);
+	free(cut);
+	free(start);
+
+	/* spans of neighbouring lines that overlap are one region */
+	size_t *parent = xreallocarray(NULL, ndev ? ndev : 1, sizeof *parent);
+	for (size_t k = 0; k < ndev; k++)
+		parent[k] = k;
+	for (long l = 0; l + 1 < nl; l++) {
+		size_t a = lstart[l], b = lstart[l + 1];
+		while (a < lstart[l + 1] && b < lstart[l + 2]) {
+			if (fmax(dev[a].lo, dev[b].lo) < fmin(dev[a].hi, dev[b].hi))
+				uf_join(parent, a, b);
+			if (dev[a].hi < dev[b].hi)
+				a++;
+			else
+				b++;
 		}
 	}
-	return 0; /* not reached */
+
+	/* the region of (x, y): the line through y is line -j0 */
+	size_t root = (size_t)-1;
+	for (size_t k = lstart[-j0]; k < lstart[-j0 + 1]; k++)
+		if (dev[k].lo <= x && (x < dev[k].hi || dev[k].hi >= box[1])) {
+			root = uf_find(parent, k);
+			break;
+		}
+	/* its area: each span stands for the band of its line, half way to
+	 * the next lines (to the box edge for the first and last) */
+	double area = 0;
+	for (long l = 0; l < nl && root != (size_t)-1; l++) {
+		double yl = line_y(y, h, l + j0);
+		double b0 = l == 0 ? box[2] : yl - 0.5 * h;
+		double b1 = l == nl - 1 ? box[3] : yl + 0.5 * h;
+		for (size_t k = lstart[l]; k < lstart[l + 1]; k++) {
+			if (uf_find(parent, k) != root)
+				continue;
+			area += (dev[k].hi - dev[k].lo) * (b1 - b0);
+			if (dev[k].lo <= box[0] || dev[k].hi >= box[1] || l == 0 || l == nl - 1)
+				*edge = 1;
+		}
+	}
+	free(parent);
+	free(lstart);
+	free(dev);
+	return area;
 }
 
 double surf_top_along(const struct surf *s, int axis, double c, double lo, double hi)
