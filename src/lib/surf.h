@@ -41,9 +41,10 @@ struct surf {
 struct surf *surf_new(const double *box);
 void surf_add(struct surf *s, const double *tri9);
 /* The triangles of one set of a plot3d file: every curve must be a
- * triangle (a closed curve of 4 points, the first repeated).  On a
- * malformed curve dies "name: set N, curve M: ...". */
-struct surf *surf_from_plot_set(const struct plot_set *set, const char *name, int setno);
+ * triangle (a closed curve of 4 points, the first repeated) and the
+ * bounds a box.  Otherwise returns NULL with what is wrong in err
+ * ("curve M: ..."), having allocated nothing. */
+struct surf *surf_from_plot_set(const struct plot_set *set, char *err, size_t errsz);
 void surf_free(struct surf *s);
 
 /* Builds the x-y grid used by surf_above (call after the last surf_add). */
@@ -97,9 +98,5 @@ double surf_top_along(const struct surf *s, int axis, double c, double lo, doubl
  * stopping at max; uses a uniform grid, time proportional to the size of
  * the surface. */
 long surf_crossings(const struct surf *s, long max);
-
-/* Polygon area (shoelace, signed: positive counter-clockwise) of n 2D
- * points. */
-double surf_polygon_area(const double *xy, size_t n);
 
 #endif

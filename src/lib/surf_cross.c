@@ -10,13 +10,15 @@
  * within CROSS_EPS of the other's plane, or a crossing point within
  * CROSS_EPS (relative) of its border.  Pairs are found through a uniform
  * 3D grid of the triangles' bounding boxes, cells about the size of the
- * triangles (at most two cells per triangle); a pair is tested only in the
- * first cell both boxes share, so each pair is tested once.
+ * triangles, kept as a sorted list of (cell, triangle) entries; a pair is
+ * tested only in the first cell both boxes share, so each pair is tested
+ * once.
  */
 #include "surf.h"
 #include "util.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -110,13 +112,39 @@ static int cell_of(const struct grid3 *g, int k, double v)
 	return f < 0 ? 0 : f > g->n[k] - 1 ? g->n[k] - 1 : (int)f;
 }
 
-static void tri_cells(const struct grid3 *g, const double *p, int *c0, int *c1)
+/* One entry of the grid: a triangle in a cell. */
+struct entry {
+	uint64_t cell;
+	unsigned tri;
+};
+
+/* LSD radix sort of entries by cell, 16 bits a pass: stable, so the
+ * triangles of a cell stay in file order and the count is the same
+ * whatever the sort. */
+static void sort_entries(struct entry *e, size_t n, uint64_t maxcell)
 {
-	for (int k = 0; k < 3; k++) {
-		c0[k] = cell_of(g, k, fmin(p[k], fmin(p[3 + k], p[6 + k])));
-		c1[k] = cell_of(g, k, fmax(p[k], fmax(p[3 + k], p[6 + k])));
+	struct entry *tmp = xreallocarray(NULL, n ? n : 1, sizeof *tmp);
+	size_t *count = xreallocarray(NULL, 65537, sizeof *count);
+	for (int shift = 0; shift < 64 && (maxcell >> shift) > 0; shift += 16) {
+		memset(count, 0, 65537 * sizeof *count);
+		for (size_t i = 0; i < n; i++)
+			count[((e[i].cell >> shift) & 0xffff) + 1]++;
+		for (int d = 0; d < 65536; d++)
+			count[d + 1] += count[d];
+		for (size_t i = 0; i < n; i++)
+			tmp[count[(e[i].cell >> shift) & 0xffff]++] = e[i];
+		memcpy(e, tmp, n * sizeof *e);
 	}
+	free(count);
+	free(tmp);
 }
+
+/* Cells of side about the mean triangle extent hold a few triangles each
+ * wherever the surface passes; the grid is sparse (a sorted list of
+ * entries), so its size follows the surface, not the box.  Large
+ * triangles among small ones would enter many cells: the side doubles
+ * while the entries would pass ENTRY_FILL per triangle. */
+enum { ENTRY_FILL = 8, GRID_MAX_SIDE = 65535 };
 
 long surf_crossings(const struct surf *s, long max)
 {
@@ -126,88 +154,94 @@ long surf_crossings(const struct surf *s, long max)
 	double w[3] = {box[1] - box[0], box[3] - box[2], box[5] - box[4]};
 	double diag = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
 	double eps = CROSS_EPS * diag;
-	/* cell side: the mean triangle extent, but no more than 2 cells per
-	 * triangle over the box */
-	double ext = 0;
+	/* bounding boxes, and the mean extent */
+	double *bb = xreallocarray(NULL, 6 * s->ntri, sizeof *bb), ext = 0;
 	for (size_t t = 0; t < s->ntri; t++) {
 		const double *p = s->v + 9 * t;
-		for (int k = 0; k < 3; k++)
-			ext += fmax(p[k], fmax(p[3 + k], p[6 + k])) -
-			       fmin(p[k], fmin(p[3 + k], p[6 + k]));
+		for (int k = 0; k < 3; k++) {
+			bb[6 * t + 2 * k] = fmin(p[k], fmin(p[3 + k], p[6 + k]));
+			bb[6 * t + 2 * k + 1] = fmax(p[k], fmax(p[3 + k], p[6 + k]));
+			ext += bb[6 * t + 2 * k + 1] - bb[6 * t + 2 * k];
+		}
 	}
 	ext /= 3.0 * (double)s->ntri;
-	double side = fmax(ext, cbrt(w[0] * w[1] * w[2] / (2.0 * (double)s->ntri)));
+	double side = fmax(ext, diag / GRID_MAX_SIDE);
+	if (!(side > 0))
+		side = diag;
 	struct grid3 g;
-	for (int k = 0; k < 3; k++) {
-		g.n[k] = (int)fmin(1024, fmax(1, ceil(w[k] / side)));
-		g.o[k] = box[2 * k];
-		g.h[k] = w[k] / g.n[k];
-	}
-	size_t ncell = (size_t)g.n[0] * g.n[1] * g.n[2];
-	size_t *start = xcalloc(ncell + 1, sizeof *start);
-	unsigned short *cmin = xreallocarray(NULL, 3 * s->ntri, sizeof *cmin);
-	int c0[3], c1[3];
-	for (int pass = 0; pass < 2; pass++) {
-		size_t *fill = NULL;
-		unsigned *tri = NULL;
-		if (pass == 1) {
-			for (size_t c = 0; c < ncell; c++)
-				start[c + 1] += start[c];
-			fill = xreallocarray(NULL, ncell, sizeof *fill);
-			memcpy(fill, start, ncell * sizeof *fill);
-			tri = xreallocarray(NULL, start[ncell] ? start[ncell] : 1, sizeof *tri);
+	int *cr = xreallocarray(NULL, 6 * s->ntri, sizeof *cr); /* cell ranges */
+	size_t nent;
+	for (;;) {
+		for (int k = 0; k < 3; k++) {
+			g.n[k] = (int)fmin(GRID_MAX_SIDE, fmax(1, ceil(w[k] / side)));
+			g.o[k] = box[2 * k];
+			g.h[k] = w[k] / g.n[k];
 		}
+		nent = 0;
 		for (size_t t = 0; t < s->ntri; t++) {
-			tri_cells(&g, s->v + 9 * t, c0, c1);
-			for (int k = 0; k < 3; k++)
-				cmin[3 * t + k] = (unsigned short)c0[k];
-			for (int k = c0[2]; k <= c1[2]; k++)
-				for (int j = c0[1]; j <= c1[1]; j++)
-					for (int i = c0[0]; i <= c1[0]; i++) {
-						size_t c = ((size_t)k * g.n[1] + j) * g.n[0] + i;
-						if (pass == 0)
-							start[c + 1]++;
-						else
-							tri[fill[c]++] = (unsigned)t;
-					}
+			size_t m = 1;
+			for (int k = 0; k < 3; k++) {
+				int *c = cr + 6 * t + 2 * k;
+				c[0] = cell_of(&g, k, bb[6 * t + 2 * k]);
+				c[1] = cell_of(&g, k, bb[6 * t + 2 * k + 1]);
+				m *= (size_t)(c[1] - c[0] + 1);
+			}
+			nent += m;
 		}
-		if (pass == 0)
-			continue;
-		free(fill);
-		long found = 0;
-		for (size_t c = 0; c < ncell && found < max; c++) {
-			int ci = (int)(c % g.n[0]), cj = (int)(c / g.n[0] % g.n[1]),
-			    ck = (int)(c / ((size_t)g.n[0] * g.n[1]));
-			for (size_t u = start[c]; u < start[c + 1] && found < max; u++) {
-				const double *a = s->v + 9 * (size_t)tri[u];
-				const unsigned short *a0 = cmin + 3 * (size_t)tri[u];
-				for (size_t v = u + 1; v < start[c + 1]; v++) {
-					const double *b = s->v + 9 * (size_t)tri[v];
-					const unsigned short *b0 = cmin + 3 * (size_t)tri[v];
-					/* test the pair only in the first cell both share */
-					if (ci != (a0[0] > b0[0] ? a0[0] : b0[0]) ||
-					    cj != (a0[1] > b0[1] ? a0[1] : b0[1]) ||
-					    ck != (a0[2] > b0[2] ? a0[2] : b0[2]))
-						continue;
-					int apart = 0;
-					for (int k = 0; k < 3 && !apart; k++) {
-						double amin = fmin(a[k], fmin(a[3 + k], a[6 + k]));
-						double amax = fmax(a[k], fmax(a[3 + k], a[6 + k]));
-						double bmin = fmin(b[k], fmin(b[3 + k], b[6 + k]));
-						double bmax = fmax(b[k], fmax(b[3 + k], b[6 + k]));
-						apart = amax < bmin || bmax < amin;
-					}
-					if (apart || share_vertex(a, b))
-						continue;
-					if (tris_cross(a, b, eps) && ++found >= max)
-						break;
-				}
+		if (nent <= ENTRY_FILL * s->ntri + 1024 ||
+		    (g.n[0] == 1 && g.n[1] == 1 && g.n[2] == 1))
+			break;
+		side *= 2;
+	}
+	struct entry *e = xreallocarray(NULL, nent, sizeof *e);
+	size_t ne = 0;
+	for (size_t t = 0; t < s->ntri; t++) {
+		const int *c = cr + 6 * t;
+		for (int k = c[4]; k <= c[5]; k++)
+			for (int j = c[2]; j <= c[3]; j++)
+				for (int i = c[0]; i <= c[1]; i++)
+					e[ne++] = (struct entry){
+						((uint64_t)k * (uint64_t)g.n[1] + (uint64_t)j) *
+							(uint64_t)g.n[0] + (uint64_t)i,
+						(unsigned)t};
+	}
+	sort_entries(e, ne, (uint64_t)g.n[0] * g.n[1] * g.n[2]);
+
+	long found = 0;
+	for (size_t u0 = 0; u0 < ne && found < max;) {
+		size_t u1 = u0 + 1;
+		while (u1 < ne && e[u1].cell == e[u0].cell)
+			u1++;
+		uint64_t c = e[u0].cell;
+		int ci = (int)(c % (uint64_t)g.n[0]), cj = (int)(c / (uint64_t)g.n[0] % (uint64_t)g.n[1]),
+		    ck = (int)(c / ((uint64_t)g.n[0] * (uint64_t)g.n[1]));
+		for (size_t u = u0; u < u1 && found < max; u++) {
+			size_t ta = e[u].tri;
+			const double *ba = bb + 6 * ta;
+			const int *ca = cr + 6 * ta;
+			for (size_t v = u + 1; v < u1; v++) {
+				size_t tb = e[v].tri;
+				const double *bbb = bb + 6 * tb;
+				if (ba[1] < bbb[0] || bbb[1] < ba[0] || ba[3] < bbb[2] ||
+				    bbb[3] < ba[2] || ba[5] < bbb[4] || bbb[5] < ba[4])
+					continue;
+				/* test the pair only in the first cell both share */
+				const int *cb = cr + 6 * tb;
+				if (ci != (ca[0] > cb[0] ? ca[0] : cb[0]) ||
+				    cj != (ca[2] > cb[2] ? ca[2] : cb[2]) ||
+				    ck != (ca[4] > cb[4] ? ca[4] : cb[4]))
+					continue;
+				const double *a = s->v + 9 * ta, *b = s->v + 9 * tb;
+				if (share_vertex(a, b))
+					continue;
+				if (tris_cross(a, b, eps) && ++found >= max)
+					break;
 			}
 		}
-		free(tri);
-		free(start);
-		free(cmin);
-		return found;
+		u0 = u1;
 	}
-	return 0; /* not reached */
+	free(e);
+	free(cr);
+	free(bb);
+	return found;
 }

@@ -151,31 +151,46 @@ int main(int argc, char **argv)
 	struct options o;
 	parse_options(argc, argv, &o);
 
+	/* every failure below frees what it holds first, so that a run under
+	 * the leak checker stays clean on errors too */
 	struct plot_file *pf = fmt_plot_read(o.input, 3);
 	long setno = o.set ? o.set : pf->nsets;
-	if (setno > pf->nsets)
-		die("%s: no set %ld: the file has %d", o.input, setno, pf->nsets);
-	struct surf *s = surf_from_plot_set(&pf->sets[setno - 1], o.input, (int)setno);
+	if (setno > pf->nsets) {
+		int n = pf->nsets;
+		fmt_plot_free(pf);
+		free(o.h);
+		die("%s: no set %ld: the file has %d", o.input, setno, n);
+	}
+	char err[200];
+	struct surf *s = surf_from_plot_set(&pf->sets[setno - 1], err, sizeof err);
 	fmt_plot_free(pf);
+	if (!s) {
+		free(o.h);
+		die("%s: set %ld: %s", o.input, setno, err);
+	}
 	const double *box = s->box;
-
-	if (o.x < box[0] || o.x > box[1] || o.y < box[2] || o.y > box[3])
-		die("%s: the point (%g, %g) is outside the box x %g..%g, y %g..%g",
-		    o.input, o.x, o.y, box[0], box[1], box[2], box[3]);
 	double *z = xreallocarray(NULL, (size_t)o.nh, sizeof *z);
-	for (int i = 0; i < o.nh; i++) {
+	err[0] = '\0';
+	if (o.x < box[0] || o.x > box[1] || o.y < box[2] || o.y > box[3])
+		snprintf(err, sizeof err, "the point (%g, %g) is outside the box x %g..%g, y %g..%g",
+			 o.x, o.y, box[0], box[1], box[2], box[3]);
+	for (int i = 0; i < o.nh && !err[0]; i++) {
 		z[i] = o.rel ? box[4] + o.h[i] / 100 * (box[5] - box[4]) : o.h[i];
 		if (!o.rel && (z[i] < box[4] || z[i] > box[5]))
-			die("%s: height z = %g is outside the resist (z from %g to %g)",
-			    o.input, z[i], box[4], box[5]);
+			snprintf(err, sizeof err, "height z = %g is outside the resist (z from %g to %g)",
+				 z[i], box[4], box[5]);
 	}
-	if (!o.force) {
-		long n = surf_crossings(s, CROSS_REPORT_MAX);
-		if (n > 0)
-			die("%s: set %ld: the surface crosses itself (%s%ld crossings: loops "
-			    "left where etch fronts met); rerun etch with -deloop, "
-			    "or give measure -force", o.input, setno,
-			    n >= CROSS_REPORT_MAX ? "at least " : "", n);
+	long n = err[0] || o.force ? 0 : surf_crossings(s, CROSS_REPORT_MAX);
+	if (n > 0)
+		snprintf(err, sizeof err, "set %ld: the surface crosses itself (%s%ld crossing%s: "
+			 "loops left where etch fronts met); rerun etch with -deloop, "
+			 "or give measure -force", setno,
+			 n >= CROSS_REPORT_MAX ? "at least " : "", n, n == 1 ? "" : "s");
+	if (err[0]) {
+		surf_free(s);
+		free(z);
+		free(o.h);
+		die("%s: %s", o.input, err);
 	}
 	surf_index(s);
 
