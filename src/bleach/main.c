@@ -26,12 +26,16 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] contour-file bleach-inputfile\n"
+	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] contour-file bleach-inputfile\n"
 	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
 	"  -solid         also write mxyz.solid.3D, the surface M = level, for pdraw\n"
 	"  -m level       M of that surface (default 0.8)\n"
 	"  -o rate-file   name of the rate array file\n"
-	"  -q             no progress lines on stderr\n";
+	"  -q             no progress lines on stderr\n"
+	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n";
+
+/* Largest -dose, mJ/cm2: bleach(5)'s bound on the dose statement. */
+static const double DOSE_MAX = 1e6;
 
 /* Largest grid: two arrays of doubles (rate and M) at 1 GB together. */
 #define BLEACH_MAX_POINTS (1L << 26)
@@ -40,6 +44,7 @@ struct options {
 	int ascii, solid, quiet;
 	double level;
 	const char *output;
+	const char *dose;       /* -dose value, checked after parsing */
 	const char *contour;
 	const char *input;
 };
@@ -62,6 +67,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_num(&a, "-m", 0, 1, &o->level))
 			;
 		else if (args_str(&a, "-o", &o->output))
+			;
+		else if (args_str(&a, "-dose", &o->dose))
 			;
 		else
 			args_operand(&a, (const char **[]){&o->contour, &o->input}, 2, "file");
@@ -124,9 +131,19 @@ int main(int argc, char **argv)
 	parse_options(argc, argv, &o);
 	quiet = o.quiet;
 
+	/* -dose D: the range of bleach(5)'s dose statement; a bad value is a
+	 * one-line usage error (sweep scripts read it in a log) */
+	double dose_override = 0;
+	if (o.dose && (!num_parse(o.dose, &dose_override) ||
+		       !(dose_override >= 0 && dose_override <= DOSE_MAX)))
+		die_status(EXIT_USAGE, "option -dose: expected a number from 0 to %g, found \"%.40s\"",
+			   DOSE_MAX, o.dose);
+
 	struct contour *c = held.c = fmt_contour_read(o.contour, 0);
 	struct bleach_input in;
 	fmt_bleach_read(o.input, &in);
+	if (o.dose)
+		in.dose = dose_override;
 
 	int nx = in.nx ? in.nx : c->nx, ny = in.nx ? in.ny : c->ny, nz = in.nz;
 	double npts = (double)nx * ny * nz;
@@ -157,8 +174,13 @@ int main(int argc, char **argv)
 
 	struct exposure *e = &held.e;
 	if (exposure_init(e, &in, nz, dmax, 1.0) != 0)
+	{
+		if (o.dose)
+			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure steps",
+			    in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
 		die("%s:%ld: dose %g mJ/cm2 with C = %g cm2/mJ needs more than %g exposure steps",
 		    o.input, in.line_dose, in.dose, in.C, EXPOSE_MAX_STEPS);
+	}
 	struct dose_table *t = dose_table_build(e, dmax);
 	progress("exposure: %d dose steps of %g mJ/cm2, %d points through %g um, %s",
 		 t->nd, t->h, nz, in.thick,

@@ -9,6 +9,7 @@
 #include "fmt_contour.h"
 #include "fmt_plot.h"
 #include "fmt_splat.h"
+#include "num.h"
 #include "splat.h"
 #include "util.h"
 
@@ -18,10 +19,11 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: splat [-o contour-file] [-q] [-name] input-file\n"
+	"usage: splat [-o contour-file] [-q] [-name] [-defocus d] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
 	"  -q               quiet: no progress lines on stderr\n"
+	"  -defocus d       defocus in micrometres, replacing the input's defocus\n"
 	"  -name            print the name of the contour-file it would write, and\n"
 	"                   exit (for scripts such as sample3D)\n";
 
@@ -29,8 +31,13 @@ struct options {
 	const char *output;
 	int quiet;
 	int name_only;
+	const char *defocus;    /* -defocus value, checked after parsing */
 	const char *input;
 };
+
+/* Largest |defocus| accepted on the command line, micrometres: a
+ * millimetre is beyond any use, and keeps the phase finite. */
+static const double DEFOCUS_MAX = 1e3;
 
 static void parse_options(int argc, char **argv, struct options *o)
 {
@@ -46,12 +53,25 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->name_only = 1;
 		else if (args_str(&a, "-o", &o->output))
 			;
+		else if (args_str(&a, "-defocus", &o->defocus))
+			;
 		else
 			args_operand(&a, (const char **[]){&o->input}, 1, "input file");
 	}
 	if (!o->input)
 		args_error(&a, "no input file");
 	args_done(&a, NULL);
+}
+
+/* The value of an override option: a bad one is a one-line usage error
+ * (sweep scripts read it in a log). */
+static double override_value(const char *opt, const char *s, double min, double max)
+{
+	double v;
+	if (!num_parse(s, &v) || !(v >= min && v <= max))
+		die_status(EXIT_USAGE, "option %s: expected a number from %g to %g, found \"%.40s\"",
+			   opt, min, max, s);
+	return v;
 }
 
 static void write_cutline(const struct spectrum *sp, const struct splat_cutline *c)
@@ -83,7 +103,12 @@ int main(int argc, char **argv)
 	struct options o;
 	util_setprog(argv[0]);
 	parse_options(argc, argv, &o);
+	double defocus = 0;
+	if (o.defocus)
+		defocus = override_value("-defocus", o.defocus, -DEFOCUS_MAX, DEFOCUS_MAX);
 	struct splat_input *in = fmt_splat_read(o.input);
+	if (o.defocus)
+		in->defocus = defocus;
 	const struct splat_mask *m = &in->mask;
 	const char *out = o.output ? o.output : in->contour;
 	if (o.name_only) {
