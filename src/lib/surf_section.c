@@ -1,0 +1,341 @@
+/*
+ * surf_section.c - horizontal sections of a triangle soup, the spans of
+ * a line across a section, the area of one developed region of it, and
+ * vertical profiles (see surf.h).
+ *
+ * A section is the set of segments where the plane cuts the triangles; no
+ * attempt is made to chain them into polygons, since a delooped surface
+ * may have small gaps and a surface that covers the box ends on the box
+ * walls.  Instead a line across the section is cut where it crosses the
+ * segments, and each stretch between crossings is classified by the
+ * vertical-ray test at its middle.  The area of a region is the sum of
+ * its stretches on closely spaced parallel lines (the midpoint rule
+ * across the lines, exact along them), stretches on neighbouring lines
+ * being joined into one region where they overlap (union-find).
+ *
+ * Cut points are computed from the edge's two ends taken in one canonical
+ * order (the lower end first), so the two triangles or segments sharing an
+ * edge or end produce the same bits and a crossing is never counted twice
+ * or lost.
+ */
+#include "surf.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void surf_section(const struct surf *s, double z, struct surf_section *sec)
+{
+	size_t cap = 0;
+	sec->z = z;
+	sec->nseg = 0;
+	sec->seg = NULL;
+	for (size_t t = 0; t < s->ntri; t++) {
+		const double *p = s->v + 9 * t;
+		int up[3], nup = 0;
+		for (int k = 0; k < 3; k++)
+			nup += up[k] = p[3 * k + 2] >= z;
+		if (nup == 0 || nup == 3)
+			continue;
+		double out[4];
+		int m = 0;
+		for (int k = 0; k < 3; k++) {
+			const double *a = p + 3 * k, *b = p + 3 * ((k + 1) % 3);
+			if (up[k] == up[(k + 1) % 3])
+				continue;
+			if (a[2] > b[2]) {
+				const double *q = a;
+				a = b;
+				b = q;
+			}
+			double f = (z - a[2]) / (b[2] - a[2]);
+			out[m++] = a[0] + f * (b[0] - a[0]);
+			out[m++] = a[1] + f * (b[1] - a[1]);
+		}
+		xgrow(&sec->seg, &cap, 4 * (sec->nseg + 1), sizeof *sec->seg);
+		memcpy(sec->seg + 4 * sec->nseg, out, sizeof out);
+		sec->nseg++;
+	}
+}
+
+void surf_section_free(struct surf_section *sec)
+{
+	free(sec->seg);
+	sec->seg = NULL;
+	sec->nseg = 0;
+}
+
+/* Where segment a-b (2D) crosses the line: axis 0 is y = c, the position
+ * returned is x; axis 1 is x = c, position y.  Returns 0 if it does not
+ * cross (an end at or above c counts as above). */
+static int seg_cut(const double *a, const double *b, int axis, double c, double *pos)
+{
+	double pa = a[1 - axis], pb = b[1 - axis]; /* across the line */
+	if ((pa >= c) == (pb >= c))
+		return 0;
+	if (pa > pb) {
+		const double *q = a;
+		a = b;
+		b = q;
+		double t = pa;
+		pa = pb;
+		pb = t;
+	}
+	*pos = a[axis] + (c - pa) * (b[axis] - a[axis]) / (pb - pa);
+	return 1;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
+}
+
+/* Spans of a line from sorted cut positions cut[0..n-1], between lo and
+ * hi, classified at their middles and merged. */
+static size_t spans_from_cuts(const struct surf *s, double z, int axis, double c,
+			      const double *cut, size_t n, double lo, double hi,
+			      struct surf_span **spans, size_t *cap)
+{
+	size_t m = 0;
+	double prev = lo;
+	for (size_t k = 0; k <= n; k++) {
+		double next = k < n ? fmin(fmax(cut[k], lo), hi) : hi;
+		if (!(next > prev))
+			continue;
+		double mid = 0.5 * (prev + next);
+		int r = axis == 0 ? surf_above(s, mid, c, z) : surf_above(s, c, mid, z);
+		r &= 1;
+		if (m && (*spans)[m - 1].resist == r) {
+			(*spans)[m - 1].hi = next;
+		} else {
+			xgrow(spans, cap, m + 1, sizeof **spans);
+			(*spans)[m++] = (struct surf_span){prev, next, r};
+		}
+		prev = next;
+	}
+	return m;
+}
+
+size_t surf_line_spans(const struct surf *s, const struct surf_section *sec,
+		       int axis, double c, struct surf_span **spans, size_t *cap)
+{
+	double *cut = NULL;
+	size_t n = 0, ccap = 0;
+	for (size_t k = 0; k < sec->nseg; k++) {
+		double pos;
+		if (seg_cut(sec->seg + 4 * k, sec->seg + 4 * k + 2, axis, c, &pos)) {
+			xgrow(&cut, &ccap, n + 1, sizeof *cut);
+			cut[n++] = pos;
+		}
+	}
+	qsort(cut, n, sizeof *cut, cmp_double);
+	size_t m = spans_from_cuts(s, sec->z, axis, c, cut, n, s->box[2 * axis],
+				   s->box[2 * axis + 1], spans, cap);
+	free(cut);
+	return m;
+}
+
+struct surf_span surf_span_at(const struct surf *s, const struct surf_section *sec,
+			      int axis, double c, double t)
+{
+	struct surf_span *sp = NULL, r = {t, t, 1};
+	size_t cap = 0;
+	size_t m = surf_line_spans(s, sec, axis, c, &sp, &cap);
+	for (size_t k = 0; k < m; k++)
+		if (sp[k].lo <= t && (t < sp[k].hi || k == m - 1)) {
+			r = sp[k];
+			break;
+		}
+	free(sp);
+	return r;
+}
+
+/* union-find over the developed spans of all lines */
+static size_t uf_find(size_t *parent, size_t i)
+{
+	while (parent[i] != i) {
+		parent[i] = parent[parent[i]];
+		i = parent[i];
+	}
+	return i;
+}
+
+static void uf_join(size_t *parent, size_t a, size_t b)
+{
+	a = uf_find(parent, a);
+	b = uf_find(parent, b);
+	if (a != b)
+		parent[a < b ? b : a] = a < b ? a : b;
+}
+
+/* The lines of surf_region_area: y_j = y + j h for j in [j0, j1]. */
+static double line_y(double y, double h, long j) { return y + (double)j * h; }
+
+double surf_region_area(const struct surf *s, const struct surf_section *sec,
+			double x, double y, double h, int *edge)
+{
+	const double *box = s->box;
+	long j0 = (long)ceil((box[2] - y) / h), j1 = (long)floor((box[3] - y) / h);
+	while (line_y(y, h, j0) < box[2])
+		j0++;
+	while (line_y(y, h, j1) > box[3])
+		j1--;
+	long nl = j1 - j0 + 1;
+	*edge = 0;
+	if (nl <= 0)
+		return 0;
+	/* the cut positions of every line, bucketed by line (CSR) */
+	size_t *start = xcalloc((size_t)nl + 1, sizeof *start);
+	for (int pass = 0; pass < 2; pass++) {
+		double *cuts = NULL;
+		size_t *fill = NULL;
+		if (pass == 1) {
+			for (long l = 0; l < nl; l++)
+				start[l + 1] += start[l];
+			cuts = xreallocarray(NULL, start[nl] ? start[nl] : 1, sizeof *cuts);
+			fill = xreallocarray(NULL, (size_t)nl, sizeof *fill);
+			memcpy(fill, start, (size_t)nl * sizeof *fill);
+		}
+		for (size_t k = 0; k < sec->nseg; k++) {
+			const double *a = sec->seg + 4 * k, *b = a + 2;
+			double ya = fmin(a[1], b[1]), yb = fmax(a[1], b[1]);
+			long ja = (long)floor((ya - y) / h) - 1, jb = (long)ceil((yb - y) / h) + 1;
+			if (ja < j0)
+				ja = j0;
+			if (jb > j1)
+				jb = j1;
+			for (long j = ja; j <= jb; j++) {
+				double pos;
+				if (!seg_cut(a, b, 0, line_y(y, h, j), &pos))
+					continue;
+				if (pass == 0)
+					start[j - j0 + 1]++;
+				else
+					cuts[fill[j - j0]++] = pos;
+			}
+		}
+		if (pass == 1) {
+			free(fill);
+			/* spans of every line; keep the developed ones */
+			struct surf_span *sp = NULL, *dev = NULL;
+			size_t spcap = 0, devcap = 0, ndev = 0;
+			size_t *lstart = xreallocarray(NULL, (size_t)nl + 1, sizeof *lstart);
+			long jy = -j0; /* the line through y */
+			for (long l = 0; l < nl; l++) {
+				double *c = cuts + start[l];
+				size_t n = start[l + 1] - start[l];
+				qsort(c, n, sizeof *c, cmp_double);
+				size_t m = spans_from_cuts(s, sec->z, 0, line_y(y, h, l + j0), c, n,
+							   box[0], box[1], &sp, &spcap);
+				lstart[l] = ndev;
+				for (size_t k = 0; k < m; k++)
+					if (!sp[k].resist) {
+						xgrow(&dev, &devcap, ndev + 1, sizeof *dev);
+						dev[ndev++] = sp[k];
+					}
+			}
+			lstart[nl] = ndev;
+			free(sp);
+			free(cuts);
+			size_t *parent = xreallocarray(NULL, ndev ? ndev : 1, sizeof *parent);
+			for (size_t k = 0; k < ndev; k++)
+				parent[k] = k;
+			for (long l = 0; l + 1 < nl; l++) {
+				size_t a = lstart[l], b = lstart[l + 1];
+				while (a < lstart[l + 1] && b < lstart[l + 2]) {
+					if (fmax(dev[a].lo, dev[b].lo) < fmin(dev[a].hi, dev[b].hi))
+						uf_join(parent, a, b);
+					if (dev[a].hi < dev[b].hi)
+						a++;
+					else
+						b++;
+				}
+			}
+			double area = 0;
+			size_t root = (size_t)-1;
+			for (size_t k = lstart[jy]; k < lstart[jy + 1]; k++)
+				if (dev[k].lo <= x && x < dev[k].hi) {
+					root = uf_find(parent, k);
+					break;
+				}
+			if (root != (size_t)-1)
+				for (long l = 0; l < nl; l++) {
+					double yl = line_y(y, h, l + j0);
+					double b0 = fmax(box[2], yl - 0.5 * h), b1 = fmin(box[3], yl + 0.5 * h);
+					if (l == 0)
+						b0 = box[2];
+					if (l == nl - 1)
+						b1 = box[3];
+					for (size_t k = lstart[l]; k < lstart[l + 1]; k++) {
+						if (uf_find(parent, k) != root)
+							continue;
+						area += (dev[k].hi - dev[k].lo) * (b1 - b0);
+						if (dev[k].lo <= box[0] || dev[k].hi >= box[1] ||
+						    l == 0 || l == nl - 1)
+							*edge = 1;
+					}
+				}
+			free(parent);
+			free(lstart);
+			free(dev);
+			free(start);
+			return area;
+		}
+	}
+	return 0; /* not reached */
+}
+
+double surf_top_along(const struct surf *s, int axis, double c, double lo, double hi)
+{
+	/* axis 0: the plane y = c, positions along x; axis 1: x = c, along y */
+	int across = 1 - axis;
+	double top = s->box[4];
+	int found = 0;
+	for (size_t t = 0; t < s->ntri; t++) {
+		const double *p = s->v + 9 * t;
+		int up[3], nup = 0;
+		for (int k = 0; k < 3; k++)
+			nup += up[k] = p[3 * k + across] >= c;
+		if (nup == 0 || nup == 3)
+			continue;
+		double q[4];
+		int m = 0;
+		for (int k = 0; k < 3; k++) {
+			const double *a = p + 3 * k, *b = p + 3 * ((k + 1) % 3);
+			if (up[k] == up[(k + 1) % 3])
+				continue;
+			if (a[across] > b[across]) {
+				const double *r = a;
+				a = b;
+				b = r;
+			}
+			double f = (c - a[across]) / (b[across] - a[across]);
+			q[m++] = a[axis] + f * (b[axis] - a[axis]);
+			q[m++] = a[2] + f * (b[2] - a[2]);
+		}
+		/* the segment (q0, z0)-(q1, z1) clipped to [lo, hi] */
+		double t0 = q[0], z0 = q[1], t1 = q[2], z1 = q[3];
+		if (t0 > t1) {
+			double r = t0;
+			t0 = t1, t1 = r;
+			r = z0;
+			z0 = z1, z1 = r;
+		}
+		if (t1 < lo || t0 > hi)
+			continue;
+		double za = z0, zb = z1;
+		if (t1 > t0) {
+			if (t0 < lo)
+				za = z0 + (lo - t0) / (t1 - t0) * (z1 - z0);
+			if (t1 > hi)
+				zb = z0 + (hi - t0) / (t1 - t0) * (z1 - z0);
+		}
+		double zm = fmax(za, zb);
+		if (!found || zm > top)
+			top = zm;
+		found = 1;
+	}
+	return top;
+}
