@@ -118,7 +118,7 @@ if [ -n "$collect" ]; then
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
 	make -s -C "$dir" --no-print-directory collect ${target:+TARGET=$target TOL=$tol} || st=$?
-	[ $st -eq 0 ] && say "$dir/fem.dat, $dir/bossung.ps${target:+, $dir/window.dat, $dir/window.ps}"
+	[ $st -ne 0 ] || say "collected $dir: fem.dat, bossung.ps$([ ! -e "$dir/window.dat" ] || echo ", window.dat, window.ps")"
 	exit $st
 fi
 

@@ -303,20 +303,31 @@ static double max_el(const struct grid *g)
 	return best;
 }
 
-/* v rounded to 9 significant digits, so that window.dat does not carry
- * the search's last-digit noise */
-static double tidy(double v)
+/* v rounded to a multiple of 1e-9 of its axis' range q, then to 9
+ * significant digits, so that window.dat carries neither the search's
+ * last-digit noise nor a focus of 2.8e-17 for 0 */
+static double tidy(double v, double q)
 {
 	char buf[40];
+	q *= 1e-9;
+	if (q > 0)
+		v = round(v / q) * q;
 	snprintf(buf, sizeof buf, "%.9g", v);
-	return strtod(buf, NULL);
+	return strtod(buf, NULL) + 0.0;
 }
 
-static void report(const char *what, const struct fem_window_row *r, int have)
+static void report(const struct grid *g, const char *what, const struct fem_window_row *r,
+		   int have)
 {
+	/* a rectangle that reaches the first or last focus may be cut by the
+	 * sweep's range: its DOF is a lower bound */
+	double eps = 1e-9 * (g->F[g->nf - 1] - g->F[0]);
+	int edge = r->focus - r->dof / 2 <= g->F[0] + eps ||
+		   r->focus + r->dof / 2 >= g->F[g->nf - 1] - eps;
 	if (have)
-		printf("DOF at %s EL: %.4g um (focus %.4g um, dose %.4g mJ/cm2)\n", what,
-		       r->dof, r->focus, r->dose);
+		printf("DOF at %s EL: %.4g um (focus %.4g um, dose %.4g mJ/cm2)%s\n", what,
+		       r->dof, fabs(r->focus) < eps ? 0 : r->focus, r->dose,
+		       edge ? "; at the edge of the focus range: sweep wider" : "");
 	else
 		printf("DOF at %s EL: 0 um (no window)\n", what);
 }
@@ -341,10 +352,11 @@ void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
 		struct fem_window_row r;
 		if (!best_rect(&g, k * EL_STEP, &r))
 			continue;
-		r.el = tidy(r.el);
-		r.dof = tidy(r.dof);
-		r.focus = tidy(r.focus);
-		r.dose = tidy(r.dose);
+		double fq = g.F[g.nf - 1] - g.F[0], dq = g.D[g.nd - 1] - g.D[0];
+		r.el = tidy(r.el, 0);
+		r.dof = tidy(r.dof, fq);
+		r.focus = tidy(r.focus, fq);
+		r.dose = tidy(r.dose, dq);
 		if (n == cap) {
 			cap = cap ? 2 * cap : 64;
 			rows = xreallocarray(rows, (size_t)cap, sizeof *rows);
@@ -377,8 +389,8 @@ void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
 	}
 	printf("window: cd %.4g um +- %.4g %% (%.4g to %.4g um), %d foci x %d doses\n",
 	       s->target, s->tol, g.lo, g.hi, g.nf, g.nd);
-	report("5%", &r5, have5);
-	report("10%", &r10, have10);
+	report(&g, "5%", &r5, have5);
+	report(&g, "10%", &r10, have10);
 	if (emax >= 0)
 		printf("max EL: %.2f %%\n", emax);
 	else

@@ -195,8 +195,9 @@ void fmt_fem_free(struct fem_table *t)
 	free(t);
 }
 
-/* measure(1): "# z cd ..." then rows, then "# swa DEG", "# resist_loss
- * UM", "# cleared yes|no"; other comment lines are skipped. */
+/* measure(1): "# z cd ..." then rows, then "# swa DEG" ("-" where the
+ * angle is undefined), "# resist_loss UM", "# cleared yes|no"; other
+ * comment lines are skipped. */
 void fmt_fem_read_measure(const char *path, struct fem_measure *m)
 {
 	struct lines l;
@@ -235,9 +236,9 @@ void fmt_fem_read_measure(const char *path, struct fem_measure *m)
 					    path, l.line, l.tok[vi]);
 				have_cleared = 1;
 			} else if (strcmp(key, "swa") == 0) {
-				m->swa = field_num(&l, vi, "swa");
+				m->swa = field_opt(&l, vi, "swa");
 			} else {
-				m->loss = field_num(&l, vi, "resist_loss");
+				m->loss = field_opt(&l, vi, "resist_loss");
 			}
 			continue;
 		}
