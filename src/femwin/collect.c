@@ -2,7 +2,10 @@
  * collect.c - one focus-exposure matrix from its points' measure tables:
  * fem.dat (focus outer, dose inner, ascending), and the Bossung plot (cd
  * against focus, one curve per dose) with a drawplot template that labels
- * the curves by dose.
+ * the curves by dose.  A point whose feature is absent at the measured
+ * height (cd 0) is left out of its curve, as a Bossung plot shows printed
+ * features only; a dose with none keeps an empty curve, so that the
+ * template's labels stay with their doses.
  *
  * A point whose table does not exist (its stage failed, or it has not run
  * yet) is left out of fem.dat and counted; a table that exists but is not
@@ -57,8 +60,14 @@ static void write_bossung(const struct fem_table *t, const char *plot_path,
 	for (int i = 0; i < t->n; i++) {
 		b[0] = fmin(b[0], t->p[i].focus);
 		b[1] = fmax(b[1], t->p[i].focus);
-		b[2] = fmin(b[2], t->p[i].cd);
-		b[3] = fmax(b[3], t->p[i].cd);
+		if (t->p[i].cd > 0) {
+			b[2] = fmin(b[2], t->p[i].cd);
+			b[3] = fmax(b[3], t->p[i].cd);
+		}
+	}
+	if (b[2] > b[3]) {  /* nothing printed anywhere */
+		b[2] = 0;
+		b[3] = 1;
 	}
 	if (plot_path) {
 		struct plot_file *pf = fmt_plot_new(2);
@@ -67,7 +76,7 @@ static void write_bossung(const struct fem_table *t, const char *plot_path,
 		for (int k = 0; k < nd; k++) {
 			int m = 0;
 			for (int i = 0; i < t->n; i++)   /* rows are in focus order */
-				if (t->p[i].dose == doses[k]) {
+				if (t->p[i].dose == doses[k] && t->p[i].cd > 0) {
 					xy[2 * m] = t->p[i].focus;
 					xy[2 * m + 1] = t->p[i].cd;
 					m++;
