@@ -213,3 +213,75 @@ void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sig
 		free(c);
 	}
 }
+
+/* Columns smoothed together: the block's rows are contiguous, so the inner
+ * loops run along memory and vectorise. */
+#define BAKE_Z_BLOCK 256
+/* Cosine modes whose Gaussian factor falls below this are dropped: they
+ * move M by less than rounding.  A 0.08 um bake in 0.7 um of resist keeps
+ * 25 of 300 modes, which makes the smoothing of the whole array cheap. */
+#define BAKE_MODE_CUT 1e-17
+
+void bake_z_columns(double *f, size_t ncol, int nz, double dz, double sigma)
+{
+	if (nz < 2)
+		return;
+	/* the DCT-I form of bake_matrix_neumann: S[j][l] = sum_m g_m
+	 * cos(pi m j/N1) cos(pi m l/N1) e_l (e_l = 1/2 at the ends), taken as
+	 * a projection on the modes kept and back, 2 nz nm products a column
+	 * instead of nz^2.  It is symmetric under k -> nz - 1 - k, so the rate
+	 * file's upward planes take it as the downward nodes do. */
+	int N1 = nz - 1, per = 2 * N1;
+	double L = N1 * dz;
+	int nm = 0;
+	while (nm < nz && exp(-0.5 * sigma * sigma * (M_PI * nm / L) * (M_PI * nm / L)) >= BAKE_MODE_CUT)
+		nm++;
+	size_t n = (size_t)nz, m = (size_t)nm;
+	double *cs = xreallocarray(NULL, m * n, sizeof *cs);     /* cos(pi m l/N1) */
+	double *g = xreallocarray(NULL, m, sizeof *g);
+	for (int k = 0; k < nm; k++) {
+		double kappa = M_PI * k / L, w = (k == 0 || k == N1) ? 0.5 : 1.0;
+		g[k] = w * exp(-0.5 * sigma * sigma * kappa * kappa) * 2.0 / N1;
+		for (int l = 0; l < nz; l++)
+			cs[(size_t)k * n + l] = cos(M_PI * (double)((long)k * l % per) / N1);
+	}
+	double *in = xreallocarray(NULL, n * BAKE_Z_BLOCK, sizeof *in);
+	double *a = xreallocarray(NULL, m * BAKE_Z_BLOCK, sizeof *a);
+	for (size_t q0 = 0; q0 < ncol; q0 += BAKE_Z_BLOCK) {
+		size_t b = ncol - q0 < BAKE_Z_BLOCK ? ncol - q0 : BAKE_Z_BLOCK;
+		for (size_t l = 0; l < n; l++) {
+			double e = (l == 0 || l == n - 1) ? 0.5 : 1.0;
+			const double *src = f + l * ncol + q0;
+			double *dst = in + l * b;
+			for (size_t i = 0; i < b; i++)
+				dst[i] = e * src[i];
+		}
+		for (size_t k = 0; k < m; k++) {
+			double *ak = a + k * b;
+			const double *c = cs + k * n;
+			memset(ak, 0, b * sizeof *ak);
+			for (size_t l = 0; l < n; l++) {
+				const double *v = in + l * b;
+				double s = c[l];
+				for (size_t i = 0; i < b; i++)
+					ak[i] += s * v[i];
+			}
+			for (size_t i = 0; i < b; i++)
+				ak[i] *= g[k];
+		}
+		for (size_t j = 0; j < n; j++) {
+			double *o = f + j * ncol + q0;
+			memset(o, 0, b * sizeof *o);
+			for (size_t k = 0; k < m; k++) {
+				const double *ak = a + k * b;
+				double s = cs[k * n + j];
+				for (size_t i = 0; i < b; i++)
+					o[i] += s * ak[i];
+			}
+		}
+	}
+	free(in);
+	free(a);
+	free(cs);
+	free(g);
+}

@@ -81,7 +81,33 @@ struct dose_table {
 struct dose_table *dose_table_build(struct exposure *e, double dmax);
 /* M at dose D into out (nz values); D is clamped to [0, dmax]. */
 void dose_table_eval(const struct dose_table *t, double D, double *out);
+/* M of node j alone at dose D: the same interpolation as dose_table_eval
+ * (the same value, bit for bit). */
+double dose_table_node(const struct dose_table *t, double D, int j);
 void dose_table_free(struct dose_table *t);
+
+/* ---- stack.c: the image inside the resist (an image stack, stack.5) ---- */
+
+struct image_stack;
+
+/* Dies naming both values if the stack's thickness or index differs from
+ * the resist file's. */
+void stack_check(const struct image_stack *st, const struct bleach_input *in,
+		 const char *stack_name, const char *input_name);
+/* M of every node of the rate array, M[(nz - 1 - j) * ncol + q] for node
+ * j (depth j dz) of column q: the column's intensity at that depth is the
+ * linear interpolation in depth of the planes' intensities
+ * I[q * st->n + k] (clear field 1), and the node is exposed to the local
+ * dose dose * I by the dose table t, or in closed form when A = 0 (e is
+ * the exposure t was built from).  A bake in z is then applied to every
+ * column. */
+void stack_expose(const struct image_stack *st, const struct bleach_input *in,
+		  struct exposure *e, const struct dose_table *t, const double *I,
+		  size_t ncol, int nz, double *M);
+/* The bake in z of every column of f[k * ncol + q] (nz planes): the
+ * Gaussian smoothing of bake_rows along k, applied to blocks of columns
+ * at once. */
+void bake_z_columns(double *f, size_t ncol, int nz, double dz, double sigma);
 
 /* ---- bake.c: post-exposure bake (thesis 8.6, Figure 8.17) ---- */
 

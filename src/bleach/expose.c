@@ -195,6 +195,25 @@ void dose_table_eval(const struct dose_table *t, double D, double *out)
 		out[j] = h00 * m0[j] + h10 * d0[j] + h01 * m1[j] + h11 * d1[j];
 }
 
+double dose_table_node(const struct dose_table *t, double D, int j)
+{
+	int n = t->nz;
+	double u = D / t->h;
+	if (!(u > 0))
+		u = 0;
+	if (u > t->nd)
+		u = t->nd;
+	int r = (int)u;
+	if (r >= t->nd)
+		return t->M[(size_t)t->nd * n + j];
+	double s = u - r;
+	double s2 = s * s, s3 = s2 * s;
+	double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * t->h;
+	double h01 = -2 * s3 + 3 * s2, h11 = (s3 - s2) * t->h;
+	size_t at = (size_t)r * n + j;
+	return h00 * t->M[at] + h10 * t->dM[at] + h01 * t->M[at + n] + h11 * t->dM[at + n];
+}
+
 void dose_table_free(struct dose_table *t)
 {
 	if (!t)

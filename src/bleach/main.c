@@ -17,6 +17,7 @@
 #include "fmt_bleach.h"
 #include "fmt_contour.h"
 #include "fmt_rate.h"
+#include "fmt_stack.h"
 #include "num.h"
 #include "util.h"
 
@@ -86,7 +87,8 @@ static int quiet;
  * that a fatal error (die exits at once) is not reported as a leak by
  * the sanitizers; main frees it all on success. */
 static struct {
-	struct contour *c;
+	struct image_stack *st;
+	double *I;
 	struct ratefile *r;
 	double *dose;
 	struct exposure e;
@@ -139,11 +141,15 @@ int main(int argc, char **argv)
 		die_status(EXIT_USAGE, "option -dose: expected a number from 0 to %g, found \"%.40s\"",
 			   DOSE_MAX, o.dose);
 
-	struct contour *c = held.c = fmt_contour_read(o.contour, 0);
+	/* an image, or an image stack (the image at depths in the resist) */
+	struct image_stack *st = held.st = fmt_stack_read(o.contour);
+	const struct contour *c = st->plane[0];
 	struct bleach_input in;
 	fmt_bleach_read(o.input, &in);
 	if (o.dose)
 		in.dose = dose_override;
+	if (st->is_stack)
+		stack_check(st, &in, o.contour, o.input);
 
 	int nx = in.nx ? in.nx : c->nx, ny = in.nx ? in.ny : c->ny, nz = in.nz;
 	double npts = (double)nx * ny * nz;
@@ -159,16 +165,31 @@ int main(int argc, char **argv)
 	/* column doses, mJ/cm2; negative intensities (interpolation ripple
 	 * in an aerial image) expose nothing */
 	double *dose = held.dose = xreallocarray(NULL, ncol, sizeof *dose);
+	/* a stack: every plane's intensity at every column, I[q * n + k] */
+	double *I = st->is_stack ? held.I = xreallocarray(NULL, ncol, st->n * sizeof *I) : NULL;
 	double dmax = 0;
 	for (int j = 0; j < ny; j++)
 		for (int i = 0; i < nx; i++) {
 			double ia = in.nx ? aerial_at(c, fmt_rate_x(r, i), fmt_rate_y(r, j))
 					  : c->z[(size_t)j * nx + i];
+			for (int k = 0; I && k < st->n; k++) {
+				/* the table must reach the brightest plane's dose */
+				const struct contour *ck = st->plane[k];
+				double v = in.nx ? aerial_at(ck, fmt_rate_x(r, i), fmt_rate_y(r, j))
+						 : ck->z[(size_t)j * nx + i];
+				I[((size_t)j * nx + i) * st->n + k] = v;
+				if (v > ia)
+					ia = v;
+			}
 			double d = ia > 0 ? in.dose * ia : 0;
 			dose[(size_t)j * nx + i] = d;
 			if (d > dmax)
 				dmax = d;
 		}
+	if (st->is_stack)
+		progress("image stack of %d planes through %g um, %dx%d, from %s, largest "
+			 "dose %g mJ/cm2", st->n, st->thick, c->nx, c->ny, o.contour, dmax);
+	else
 	progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
 		 c->nx, c->ny, o.contour, dmax);
 
@@ -187,11 +208,15 @@ int main(int argc, char **argv)
 		 in.standing ? "thin-film standing waves" : "Beer-Lambert, no reflections");
 
 	double dz = in.thick / (nz - 1);
-	if (in.bake != BAKE_NONE && in.diffusion > 0) {
+	/* with a stack the bake smooths the M array instead (stack.c) */
+	if (in.bake != BAKE_NONE && in.diffusion > 0 && !st->is_stack) {
 		bake_rows2(t->M, t->dM, t->nd + 1, nz, dz, in.diffusion);
 	}
 
 	double *col = xreallocarray(NULL, (size_t)nz, sizeof *col);
+	if (st->is_stack)
+		stack_expose(st, &in, e, t, I, ncol, nz, M);
+	else
 	for (size_t q = 0; q < ncol; q++) {
 		dose_table_eval(t, dose[q], col);
 		/* node j is at depth j dz; the rate file's k = 0 is the bottom */
@@ -231,6 +256,7 @@ int main(int argc, char **argv)
 	dose_table_free(t);
 	exposure_free(e);
 	fmt_rate_free(r);
-	fmt_contour_free(c);
+	free(I);
+	fmt_stack_free(st);
 	return 0;
 }

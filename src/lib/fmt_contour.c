@@ -5,6 +5,8 @@
 #include "util.h"
 
 #include <stdlib.h>
+#include <string.h>
+#include <strings.h>
 
 struct contour *fmt_contour_new(double xmin, double xmax, double ymin,
 				double ymax, int nx, int ny)
@@ -26,13 +28,32 @@ double fmt_contour_y(const struct contour *c, int j)
 	return c->ymin + (c->ymax - c->ymin) * j / (c->ny - 1);
 }
 
-struct contour *fmt_contour_read(const char *path, int old)
+/* The first number of the header, already read as token t; the same
+ * messages as lex_number (a token shown printable, cut at 24 bytes). */
+static double first_number(struct lex *lx, const char *t, const char *what)
 {
-	struct lex *lx = lex_open(path);
+	double v;
+	char s[40];
+	if (!t)
+		return lex_number(lx, what);    /* at the end: its message and line */
+	if (!num_parse(t, &v)) {
+		size_t j = 0;
+		for (size_t i = 0; t[i] && i < 24; i++)
+			s[j++] = (t[i] >= 32 && t[i] < 127) ? t[i] : '?';
+		if (strlen(t) > 24)
+			s[j++] = '.', s[j++] = '.', s[j++] = '.';
+		s[j] = '\0';
+		lex_error(lx, "expected %s (a finite number), found \"%s\"", what, s);
+	}
+	return v;
+}
+
+struct contour *fmt_contour_parse(struct lex *lx, const char *first, int old)
+{
 	double b[4];
 	int nx, ny;
 	if (old) {
-		double x0 = lex_number(lx, "xmin");
+		double x0 = first_number(lx, first, "xmin");
 		double y0 = lex_number(lx, "ymin");
 		double xl = lex_number(lx, "xlength");
 		double yl = lex_number(lx, "ylength");
@@ -41,7 +62,7 @@ struct contour *fmt_contour_read(const char *path, int old)
 		b[0] = x0, b[1] = x0 + xl, b[2] = y0, b[3] = y0 + yl;
 		nx = ny = CONTOUR_OLD_N;
 	} else {
-		b[0] = lex_number(lx, "xmin");
+		b[0] = first_number(lx, first, "xmin");
 		b[1] = lex_number(lx, "xmax");
 		b[2] = lex_number(lx, "ymin");
 		b[3] = lex_number(lx, "ymax");
@@ -70,15 +91,28 @@ struct contour *fmt_contour_read(const char *path, int old)
 		xgrow(&z, &cap, n + 1, sizeof *z);
 		z[n++] = v;
 	}
-	if (lex_token(lx)) {
-		free(z);
-		lex_error(lx, "unexpected data after the %zu z values", want);
-	}
-	lex_close(lx);
 	struct contour *c = xcalloc(1, sizeof *c);
 	c->xmin = b[0], c->xmax = b[1], c->ymin = b[2], c->ymax = b[3];
 	c->nx = nx, c->ny = ny;
 	c->z = z;
+	return c;
+}
+
+struct contour *fmt_contour_read(const char *path, int old)
+{
+	struct lex *lx = lex_open(path);
+	const char *t = lex_token(lx);
+	/* an image stack (stack.5) starts with its keyword: say what it is
+	 * rather than "expected xmin" */
+	if (t && strcasecmp(t, "stack") == 0)
+		lex_error(lx, "an image stack (see stack(5)), not a single contour-file");
+	struct contour *c = fmt_contour_parse(lx, t, old);
+	if (lex_token(lx)) {
+		size_t want = (size_t)c->nx * (size_t)c->ny;
+		fmt_contour_free(c);
+		lex_error(lx, "unexpected data after the %zu z values", want);
+	}
+	lex_close(lx);
 	return c;
 }
 
@@ -91,13 +125,18 @@ static void write_values(FILE *f, const struct contour *c)
 	}
 }
 
+void fmt_contour_put(FILE *f, const struct contour *c)
+{
+	double b[4] = {c->xmin, c->xmax, c->ymin, c->ymax};
+	num_print_row(f, b, 4);
+	fprintf(f, "%d %d\n", c->nx, c->ny);
+	write_values(f, c);
+}
+
 void fmt_contour_write(const char *path, const struct contour *c)
 {
 	struct aout *a = aout_open(path);
-	double b[4] = {c->xmin, c->xmax, c->ymin, c->ymax};
-	num_print_row(a->f, b, 4);
-	fprintf(a->f, "%d %d\n", c->nx, c->ny);
-	write_values(a->f, c);
+	fmt_contour_put(a->f, c);
 	aout_commit(a);
 }
 

@@ -8,10 +8,14 @@
  *
  * Grid points include both ends: x_i = xmin + i (xmax-xmin)/(nx-1).
  * The -old format is a 50x50 grid with first line "xmin ymin xlength
- * ylength" and no counts.  See man/man5/contour.5.
+ * ylength" and no counts.  See man/man5/contour.5.  A file starting with
+ * the word "stack" is an image stack (fmt_stack.h), which this reader
+ * refuses by name.
  */
 #ifndef S3D_FMT_CONTOUR_H
 #define S3D_FMT_CONTOUR_H
+
+#include <stdio.h>
 
 enum { CONTOUR_OLD_N = 50, CONTOUR_MAX_N = 100000 };
 
@@ -28,6 +32,13 @@ struct contour *fmt_contour_read(const char *path, int old);
 void fmt_contour_write(const char *path, const struct contour *c);
 void fmt_contour_write_old(const char *path, const struct contour *c);
 void fmt_contour_free(struct contour *c);
+
+/* For readers of formats that embed contour-files (fmt_stack.c): the
+ * header and values from lx, whose first token (NULL at the end) the
+ * caller has already taken; and the same written to an open stream. */
+struct lex;
+struct contour *fmt_contour_parse(struct lex *lx, const char *first, int old);
+void fmt_contour_put(FILE *f, const struct contour *c);
 
 double fmt_contour_x(const struct contour *c, int i);
 double fmt_contour_y(const struct contour *c, int j);

@@ -27,6 +27,9 @@ enum { SPLAT_MAX_ZERNIKE = 37 };
 /* Slack when checking that a rect lies inside the window, relative to
  * the window size: inputs written with a few decimals must pass. */
 static const double WINDOW_SLACK = 1e-9;
+/* Bounds of the resist statement: a millimetre of film, and an index
+ * beyond any optical material. */
+static const double SPLAT_MAX_THICK = 1e3, SPLAT_MAX_INDEX = 100;
 
 static double number(struct lex *lx, const char *kw, const char *what, const char *s)
 {
@@ -79,6 +82,48 @@ static void trans_phase(struct lex *lx, const char *kw, const char *ts, const ch
 	if (*t < 0 || *t > 1)
 		lex_error(lx, "%s: amplitude transmission %g is outside [0, 1]", kw, *t);
 	*ph = number(lx, kw, "a phase in degrees", ps);
+}
+
+/* "resist thickness T index n planes N", the pairs in any order (as in
+ * bleach(5)'s resist statement). */
+static void resist_stack(struct lex *lx, struct splat_input *in, char **tok, int n)
+{
+	static const char form[] = "resist thickness T index n planes N";
+	int got = 0;
+	if (n != 7)
+		lex_error(lx, "resist: expected \"%s\"", form);
+	for (int i = 1; i + 1 < n; i += 2) {
+		const char *k = tok[i], *v = tok[i + 1];
+		int bit = strcasecmp(k, "thickness") == 0 ? 1 : strcasecmp(k, "index") == 0 ? 2 :
+			  strcasecmp(k, "planes") == 0 ? 4 : 0;
+		if (!bit)
+			lex_error(lx, "resist: unknown word \"%.40s\" (expected thickness, index "
+				  "or planes)", k);
+		if (got & bit)
+			lex_error(lx, "resist: %s given twice", k);
+		got |= bit;
+		if (bit == 1) {
+			in->resist_thick = number(lx, "resist", "a thickness in micrometres", v);
+			if (!(in->resist_thick > 0 && in->resist_thick <= SPLAT_MAX_THICK))
+				lex_error(lx, "resist: thickness must be in (0, %g] um, found %g",
+					  SPLAT_MAX_THICK, in->resist_thick);
+		} else if (bit == 2) {
+			in->resist_index = number(lx, "resist", "a refractive index", v);
+			/* n >= 1 > NA: every direction in the pupil propagates */
+			if (!(in->resist_index >= 1 && in->resist_index <= SPLAT_MAX_INDEX))
+				lex_error(lx, "resist: index must be in [1, %g], found %g",
+					  SPLAT_MAX_INDEX, in->resist_index);
+		} else {
+			long np;
+			if (!num_parse_count(v, 2, SPLAT_MAX_PLANES, &np))
+				lex_error(lx, "resist: planes: expected a count from 2 to %d, "
+					  "found \"%.40s\"", SPLAT_MAX_PLANES, v);
+			in->planes = (int)np;
+		}
+	}
+	if (got != 7)
+		lex_error(lx, "resist: expected \"%s\"", form);
+	in->resist_line = lex_lineno(lx);
 }
 
 struct splat_input *fmt_splat_read(const char *path)
@@ -156,6 +201,8 @@ struct splat_input *fmt_splat_read(const char *path)
 		} else if (strcasecmp(kw, "defocus") == 0) {
 			want(lx, kw, n, 1, 1, "defocus micrometres");
 			in->defocus = number(lx, kw, "a defocus in micrometres", tok[1]);
+		} else if (strcasecmp(kw, "resist") == 0) {
+			resist_stack(lx, in, tok, n);
 		} else if (strcasecmp(kw, "coma") == 0) {
 			field_term(lx, in, &acap, SPLAT_AB_COMA, tok, n);
 		} else if (strcasecmp(kw, "astigmatism") == 0) {
@@ -327,6 +374,11 @@ void fmt_splat_write(const char *path, const struct splat_input *in)
 	}
 	fputc('\n', f);
 	fputs("defocus", f); put(f, in->defocus); fputc('\n', f);
+	if (in->planes) {
+		fputs("resist thickness", f); put(f, in->resist_thick);
+		fputs(" index", f); put(f, in->resist_index);
+		fprintf(f, " planes %d\n", in->planes);
+	}
 	for (int i = 0; i < in->naberr; i++) {
 		const struct splat_aberr *ab = &in->aberr[i];
 		fputs(names[ab->kind], f);

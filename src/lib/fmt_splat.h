@@ -7,6 +7,7 @@
  *   wavelength 0.436          na 0.28          sigma 0.5
  *   annular s_in s_out        quadrupole c r   dipole c r [x|y]
  *   defocus d
+ *   resist thickness T index n planes N     (an image stack, see stack.5)
  *   coma w field hx hy        astigmatism w field hx hy     spherical w
  *   curvature w field hx hy   distortion w field hx hy      zernike n c
  *   background dark|clear|T PHASE
@@ -94,7 +95,18 @@ struct splat_input {
 	int contour_set;                /* 1 if the file named it */
 	int ncutlines;
 	struct splat_cutline *cutlines;
+
+	/* "resist thickness T index n planes N": the image inside the resist
+	 * at N depths k T/(N-1), written as an image stack (stack.5) */
+	int planes;                     /* 0: a single image; else 2..SPLAT_MAX_PLANES */
+	double resist_thick;            /* T, micrometres */
+	double resist_index;            /* n, real refractive index */
+	long resist_line;
 };
+
+/* Most planes of an image stack: far beyond any use (a plane every
+ * nanometre of a micrometre film), small enough to bound the memory. */
+enum { SPLAT_MAX_PLANES = 1001 };
 
 /* Reads and checks the whole file; dies "prog: file:line: ..." on any
  * error (unknown statement, wrong count of values, na >= 1, negative

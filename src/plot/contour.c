@@ -16,6 +16,7 @@
 #include "fmt_contour.h"
 #include "fmt_options.h"
 #include "fmt_plot.h"
+#include "fmt_stack.h"
 #include "num.h"
 #include "plot_common.h"
 #include "util.h"
@@ -78,6 +79,7 @@ struct curve {
 };
 
 struct page {
+	char *label;            /* top label of an image stack's page, or NULL */
 	double bounds[4];
 	int ncurves;
 	struct curve *c;
@@ -357,7 +359,8 @@ static struct draw *render(void *vc)
 		plot_axis_linear(&ya, pg->bounds[2], pg->bounds[3], c->s.yticks, 0);
 		struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
 		plot_frame_place(&f, d, c->s.equalscale);
-		plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+		plot_frame_draw(d, &f, c->s.grid, pg->label ? pg->label : c->s.toplabel,
+				c->s.xlabel, c->s.ylabel);
 		draw_clip(d, f.x0, f.y0, f.x1, f.y1);
 		for (int i = 0; i < pg->ncurves; i++) {
 			const struct curve *cv = &pg->c[i];
@@ -491,6 +494,7 @@ int main(int argc, char **argv)
 		step = v->num;
 
 	struct contour *g = NULL;
+	struct image_stack *stk = NULL; /* an image stack: one page per plane */
 	struct plot_file *pf = NULL;
 	double zmin = INFINITY, zmax = -INFINITY;
 	if (o.tri) {
@@ -510,11 +514,23 @@ int main(int argc, char **argv)
 			line++;
 		}
 	} else {
-		g = fmt_contour_read(o.input, o.old);
-		size_t n = (size_t)g->nx * g->ny;
-		for (size_t k = 0; k < n; k++) {
-			zmin = fmin(zmin, g->z[k]);
-			zmax = fmax(zmax, g->z[k]);
+		if (o.old) {
+			g = fmt_contour_read(o.input, 1);
+		} else {
+			stk = fmt_stack_read(o.input);
+			g = stk->plane[0];
+			if (stk->is_stack && o.ex)
+				die("%s: -ex writes the mesh of a single image, not of an image "
+				    "stack", o.input);
+		}
+		/* one set of levels for every plane, so that pages compare */
+		for (int pl = 0; pl < (stk ? stk->n : 1); pl++) {
+			const struct contour *gp = stk ? stk->plane[pl] : g;
+			size_t n = (size_t)gp->nx * gp->ny;
+			for (size_t k = 0; k < n; k++) {
+				zmin = fmin(zmin, gp->z[k]);
+				zmax = fmax(zmax, gp->z[k]);
+			}
 		}
 		if (o.ex)
 			write_mesh(g, o.input);
@@ -533,32 +549,41 @@ int main(int argc, char **argv)
 	}
 
 	/* the curves, page by page */
-	c.npages = pf ? pf->nsets : 1;
+	c.npages = pf ? pf->nsets : stk ? stk->n : 1;
 	c.pages = xcalloc((size_t)c.npages, sizeof *c.pages);
+	const struct contour *g_top = g;
 	struct segs sg = {NULL, 0, 0};
 	for (int pi = 0; pi < c.npages; pi++) {
 		struct page *pg = &c.pages[pi];
 		size_t cap = 0;
 		double *xs = NULL, *ys = NULL, *zz = NULL;
-		if (g) {
-			pg->bounds[0] = g->xmin, pg->bounds[1] = g->xmax;
-			pg->bounds[2] = g->ymin, pg->bounds[3] = g->ymax;
+		const struct contour *gp = stk ? stk->plane[pi] : g_top;
+		if (stk && stk->is_stack) {
+			char dbuf[NUM_BUFSZ];
+			const char *tl = c.s.toplabel ? c.s.toplabel : "";
+			pg->label = xmalloc(strlen(tl) + NUM_BUFSZ + 32);
+			sprintf(pg->label, "%s%sdepth %s um", tl, *tl ? ", " : "",
+				num_fmt(dbuf, stk->depth[pi]));
+		}
+		if (gp) {
+			pg->bounds[0] = gp->xmin, pg->bounds[1] = gp->xmax;
+			pg->bounds[2] = gp->ymin, pg->bounds[3] = gp->ymax;
 			if (join) {
-				zz = join_grid(g, strcmp(join, "high") == 0 ? zmax : zmin, &xs, &ys);
+				zz = join_grid(gp, strcmp(join, "high") == 0 ? zmax : zmin, &xs, &ys);
 			} else {
-				xs = xreallocarray(NULL, (size_t)g->nx, sizeof *xs);
-				ys = xreallocarray(NULL, (size_t)g->ny, sizeof *ys);
-				for (int i = 0; i < g->nx; i++) xs[i] = fmt_contour_x(g, i);
-				for (int j = 0; j < g->ny; j++) ys[j] = fmt_contour_y(g, j);
+				xs = xreallocarray(NULL, (size_t)gp->nx, sizeof *xs);
+				ys = xreallocarray(NULL, (size_t)gp->ny, sizeof *ys);
+				for (int i = 0; i < gp->nx; i++) xs[i] = fmt_contour_x(gp, i);
+				for (int j = 0; j < gp->ny; j++) ys[j] = fmt_contour_y(gp, j);
 			}
 		} else {
 			memcpy(pg->bounds, pf->sets[pi].bounds, 4 * sizeof *pg->bounds);
 		}
 		for (int l = 0; l < c.nlevels; l++) {
 			sg.n = 0;
-			if (g)
-				grid_segments(zz ? zz : g->z, xs, ys, g->nx + (zz ? 2 : 0),
-					      g->ny + (zz ? 2 : 0), c.levels[l], &sg);
+			if (gp)
+				grid_segments(zz ? zz : gp->z, xs, ys, gp->nx + (zz ? 2 : 0),
+					      gp->ny + (zz ? 2 : 0), c.levels[l], &sg);
 			else
 				for (int ci = 0; ci < pf->sets[pi].ncurves; ci++)
 					tri_segments(pf->sets[pi].curves[ci].p, c.levels[l], &sg);
@@ -588,10 +613,14 @@ int main(int argc, char **argv)
 		for (int i = 0; i < c.pages[pi].ncurves; i++)
 			free(c.pages[pi].c[i].xy);
 		free(c.pages[pi].c);
+		free(c.pages[pi].label);
 	}
 	free(c.pages);
 	free(c.levels);
-	fmt_contour_free(g);
+	if (stk)
+		fmt_stack_free(stk);
+	else
+		fmt_contour_free(g);
 	fmt_plot_free(pf);
 	fmt_options_free(spec, val);
 	return 0;

@@ -2,13 +2,15 @@
  * splat - aerial image of a periodic 2D mask by Hopkins partially
  * coherent imaging (thesis 2.2.1, 9.2-9.3; SPLAT, "Simulation of
  * Projection Lens Aberrations via TCCs").  Reads a splat input file
- * (man/man5/splat.5), writes the image as a contour-file and any
- * cutlines as 2D plot files.
+ * (man/man5/splat.5), writes the image as a contour-file (or, with a
+ * resist statement, the image at several depths in the resist as an
+ * image stack, man/man5/stack.5) and any cutlines as 2D plot files.
  */
 #include "args.h"
 #include "fmt_contour.h"
 #include "fmt_plot.h"
 #include "fmt_splat.h"
+#include "fmt_stack.h"
 #include "num.h"
 #include "splat.h"
 #include "util.h"
@@ -74,25 +76,32 @@ static double override_value(const char *opt, const char *s, double min, double 
 	return v;
 }
 
+/* A cutline: intensity against distance along the line (thesis Figure
+ * 2.7a), one curve per plane of an image stack, top plane first. */
 static void write_cutline(const struct spectrum *sp, const struct splat_cutline *c)
 {
 	double *p = xreallocarray(NULL, (size_t)c->npts, 2 * sizeof *p);
 	double len = hypot(c->x2 - c->x1, c->y2 - c->y1);
 	double lo = 0, hi = 0;
-	for (int k = 0; k < c->npts; k++) {
-		double t = (double)k / (c->npts - 1);
-		double v = image_at(sp, c->x1 + t * (c->x2 - c->x1), c->y1 + t * (c->y2 - c->y1));
-		/* thesis Figure 2.7a: intensity against distance along the cut */
-		p[2 * k] = t * len;
-		p[2 * k + 1] = v;
-		if (k == 0 || v > hi) hi = v;
-		if (k == 0 || v < lo) lo = v;
-	}
-	/* the graph spans at least 0..1, clear-field intensity */
-	double b[4] = {0, len, lo < 0 ? lo : 0, hi > 1 ? hi : 1};
 	struct plot_file *pf = fmt_plot_new(2);
+	/* the graph spans at least 0..1, clear-field intensity */
+	double b[4] = {0, len, 0, 1};
 	struct plot_set *set = fmt_plot_add_set(pf, b);
-	fmt_plot_add_curve(pf, set, c->npts, p);
+	for (int l = 0; l < sp->nplanes; l++) {
+		struct spectrum v = spectrum_plane(sp, l);
+		for (int k = 0; k < c->npts; k++) {
+			double t = (double)k / (c->npts - 1);
+			double z = image_at(&v, c->x1 + t * (c->x2 - c->x1),
+					    c->y1 + t * (c->y2 - c->y1));
+			p[2 * k] = t * len;
+			p[2 * k + 1] = z;
+			if ((l == 0 && k == 0) || z > hi) hi = z;
+			if ((l == 0 && k == 0) || z < lo) lo = z;
+		}
+		fmt_plot_add_curve(pf, set, c->npts, p);
+	}
+	set->bounds[2] = lo < 0 ? lo : 0;
+	set->bounds[3] = hi > 1 ? hi : 1;
 	fmt_plot_write(c->file, pf);
 	fmt_plot_free(pf);
 	free(p);
@@ -133,10 +142,27 @@ int main(int argc, char **argv)
 
 	struct contour *c = fmt_contour_new(m->xmin, m->xmax, m->ymin, m->ymax,
 					    in->nx, in->ny);
-	image_grid(sp, m->xmin, m->xmax, m->ymin, m->ymax, in->nx, in->ny, c->z);
-	fmt_contour_write(out, c);
-	if (!o.quiet)
-		fprintf(stderr, "splat: wrote %s\n", out);
+	if (in->planes) {
+		/* the image stack (stack.5): plane k at depth k T/(N-1) */
+		struct image_stack *st = fmt_stack_new(in->planes, in->resist_thick,
+						       in->resist_index, c);
+		for (int k = 0; k < st->n; k++) {
+			struct spectrum v = spectrum_plane(sp, k);
+			image_grid(&v, m->xmin, m->xmax, m->ymin, m->ymax, in->nx, in->ny,
+				   st->plane[k]->z);
+		}
+		fmt_stack_write(out, st);
+		fmt_stack_free(st);
+		if (!o.quiet)
+			fprintf(stderr, "splat: wrote %s, an image stack of %d planes through "
+				"%g um of resist of index %g\n", out, in->planes,
+				in->resist_thick, in->resist_index);
+	} else {
+		image_grid(sp, m->xmin, m->xmax, m->ymin, m->ymax, in->nx, in->ny, c->z);
+		fmt_contour_write(out, c);
+		if (!o.quiet)
+			fprintf(stderr, "splat: wrote %s\n", out);
+	}
 	for (int k = 0; k < in->ncutlines; k++) {
 		write_cutline(sp, &in->cutlines[k]);
 		if (!o.quiet)

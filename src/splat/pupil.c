@@ -14,6 +14,15 @@
  * and fringe Zernike terms.  The thesis states an aberration as its
  * largest optical path difference at the pupil edge for a field point
  * ("coma 0.4 lambda at (1,0)"), which is w here.
+ *
+ * Inside the resist (splat(5)'s resist statement, issue 11) a plane wave
+ * of pupil frequency g travels at sin(theta) = lambda |g| / n, so at depth
+ * z below the top it has gained, relative to the axial wave,
+ *   W_z = (z / lambda) (sqrt(n^2 - lambda^2 |g|^2) - n)   waves,
+ * the exact defocus form with the resist's index: for n = 1 depth z is
+ * defocus z, and paraxially depth z is defocus z / n.  Its amplitude
+ * change at the interface (Fresnel transmission) and the absorption are
+ * left to bleach, so every plane stays normalised to a clear field of 1.
  */
 #include "splat.h"
 
@@ -36,8 +45,24 @@ void pupil_init(struct pupil *p, const struct splat_input *in)
 		if (in->aberr[i].w != 0)
 			flat = 0;
 	}
+	p->nplanes = 1;
+	p->dz = 0;
+	p->index = 1;
+	if (in->planes >= 2) {
+		p->nplanes = in->planes;
+		p->dz = in->resist_thick / (in->planes - 1);
+		p->index = in->resist_index;
+		double n = in->resist_index;
+		waves += in->resist_thick / in->wavelength * (n - sqrt(n * n - in->na * in->na));
+	}
 	p->flat = flat;
 	p->waves = waves;
+}
+
+double pupil_depth(const struct pupil *p, double gx, double gy)
+{
+	double q = p->index * p->index - p->lambda * p->lambda * (gx * gx + gy * gy);
+	return 2 * M_PI / p->lambda * (sqrt(q > 0 ? q : 0) - p->index);
 }
 
 static double factorial(int n)

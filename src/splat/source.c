@@ -18,6 +18,10 @@
  *     a flat pupil the integrand is 1 and the row integral is its length,
  *     otherwise Gauss-Legendre over the interval of the smooth
  *     exp(i (Phi(s + f') - Phi(s + f''))).
+ * An image stack (planes in the resist) shares all of this: at each node
+ * the integrand of plane k is that of the top plane turned by k times the
+ * depth phase of one plane step, so the planes cost a complex rotation
+ * each, not a second integration.
  */
 #include "splat.h"
 #include "util.h"
@@ -152,6 +156,18 @@ double complex source_disc3(const struct pupil *p, const struct quad *q,
 			    double cx, double cy, double r,
 			    double f1x, double f1y, double f2x, double f2y)
 {
+	struct pupil top = *p;
+	top.nplanes = 1;
+	double complex sum = 0, row;
+	source_disc3_planes(&top, q, cx, cy, r, f1x, f1y, f2x, f2y, &sum, &row);
+	return sum;
+}
+
+void source_disc3_planes(const struct pupil *p, const struct quad *q,
+			 double cx, double cy, double r,
+			 double f1x, double f1y, double f2x, double f2y,
+			 double complex *sums, double complex *row)
+{
 	double R = p->cutoff;
 	double ccx[3] = {cx, -f1x, -f2x}, ccy[3] = {cy, -f1y, -f2y}, rr[3] = {r, R, R};
 	int same = f1x == f2x && f1y == f2y;
@@ -160,14 +176,14 @@ double complex source_disc3(const struct pupil *p, const struct quad *q,
 	for (int i = 0; i < nc; i++)
 		for (int j = i + 1; j < nc; j++)
 			if (hypot(ccx[i] - ccx[j], ccy[i] - ccy[j]) >= rr[i] + rr[j])
-				return 0;
+				return;
 	double ylo = -INFINITY, yhi = INFINITY;
 	for (int i = 0; i < nc; i++) {
 		if (ccy[i] - rr[i] > ylo) ylo = ccy[i] - rr[i];
 		if (ccy[i] + rr[i] < yhi) yhi = ccy[i] + rr[i];
 	}
 	if (!(yhi > ylo))
-		return 0;
+		return;
 
 	/* breakpoints across: range ends, circle tops and bottoms, crossings */
 	double bp[2 + 6 + 6];
@@ -195,8 +211,9 @@ double complex source_disc3(const struct pupil *p, const struct quad *q,
 		}
 	qsort(bp, (size_t)nb, sizeof *bp, cmp_double);
 
-	int flat = p->flat || same;
-	double complex sum = 0;
+	/* the pair of an order with itself has no phase at any depth */
+	int np = p->nplanes;
+	int flat = (p->flat && np == 1) || same;
 	for (int k = 0; k + 1 < nb; k++) {
 		double y0 = bp[k], y1 = bp[k + 1];
 		if (!(y1 > y0))
@@ -216,19 +233,36 @@ double complex source_disc3(const struct pupil *p, const struct quad *q,
 			if (!(b > a))
 				continue;
 			if (flat) {
-				sum += wy * (b - a);
+				for (int l = 0; l < np; l++)
+					sums[l] += wy * (b - a);
 				continue;
 			}
 			double xm = 0.5 * (a + b), xh = 0.5 * (b - a);
-			double complex row = 0;
+			for (int l = 0; l < np; l++)
+				row[l] = 0;
 			for (int ii = 0; ii < q->ninner; ii++) {
 				double x = xm + xh * q->ui[ii];
 				double ph = pupil_phase(p, x + f1x, y + f1y) -
 					pupil_phase(p, x + f2x, y + f2y);
-				row += q->wi[ii] * (cos(ph) + I * sin(ph));
+				double c = cos(ph), sn = sin(ph);
+				row[0] += q->wi[ii] * (c + I * sn);
+				if (np == 1)
+					continue;
+				/* plane l adds l times the depth phase of one step:
+				 * rotate the integrand by it, plane after plane */
+				double dp = p->dz * (pupil_depth(p, x + f1x, y + f1y) -
+						     pupil_depth(p, x + f2x, y + f2y));
+				double cs = cos(dp), ss = sin(dp);
+				double er = q->wi[ii] * c, ei = q->wi[ii] * sn;
+				for (int l = 1; l < np; l++) {
+					double re = er * cs - ei * ss;
+					ei = er * ss + ei * cs;
+					er = re;
+					row[l] += er + I * ei;
+				}
 			}
-			sum += wy * xh * row;
+			for (int l = 0; l < np; l++)
+				sums[l] += wy * xh * row[l];
 		}
 	}
-	return sum;
 }

@@ -5,7 +5,8 @@
  * The computation runs in four stages, one file each:
  *   mask.c    Fourier coefficients c(f) of the periodic mask;
  *   pupil.c   the pupil P(g) = exp(i Phi(g)) inside NA/lambda, with the
- *             defocus and aberration phase Phi;
+ *             defocus and aberration phase Phi, and the propagation
+ *             phase into the resist for an image stack;
  *   source.c  the effective source as signed discs, and the exact
  *             integral over the intersection of three discs (a source
  *             disc and two shifted pupils) that every TCC needs;
@@ -45,12 +46,21 @@ struct pupil {
 	int naberr;
 	const struct splat_aberr *aberr;
 	int flat;               /* 1 if Phi == 0 everywhere (no defocus, no aberration) */
-	double waves;           /* bound on |W + W_defocus| in waves */
+	double waves;           /* bound on |W + W_defocus| (+ |W_z| of the deepest plane) in waves */
+	/* the image inside the resist (splat(5)'s resist statement): plane k
+	 * at depth k dz adds 2 pi W_z with W_z = (z / lambda)(sqrt(n^2 -
+	 * lambda^2 |g|^2) - n) */
+	int nplanes;            /* 1: the single image at the resist top */
+	double dz;              /* plane spacing, micrometres */
+	double index;           /* resist index n */
 };
 
 void pupil_init(struct pupil *p, const struct splat_input *in);
 /* Phi(g) in radians at pupil frequency g (1/um), |g| <= cutoff. */
 double pupil_phase(const struct pupil *p, double gx, double gy);
+/* The depth phase per micrometre, 2 pi W_z / z in radians per um, at
+ * pupil frequency g (1/um): plane k adds k dz times it to Phi. */
+double pupil_depth(const struct pupil *p, double gx, double gy);
 /* Fringe Zernike term n (1..37) at normalised radius rho and angle theta. */
 double pupil_zernike(int n, double rho, double theta);
 
@@ -86,14 +96,26 @@ void quad_default(const struct pupil *p, int *nouter, int *ninner);
 double complex source_disc3(const struct pupil *p, const struct quad *q,
 			    double cx, double cy, double r,
 			    double f1x, double f1y, double f2x, double f2y);
+/* The same for every plane of the pupil at once, added to sum[k] for
+ * k < p->nplanes: the region and the quadrature nodes are shared, only
+ * the depth phase differs; row is scratch of p->nplanes values. */
+void source_disc3_planes(const struct pupil *p, const struct quad *q,
+			 double cx, double cy, double r,
+			 double f1x, double f1y, double f2x, double f2y,
+			 double complex *sum, double complex *row);
 
-/* The image spectrum: A[(dn + 2 nmax) * (4 mmax + 1) + dm + 2 mmax]. */
+/* The image spectrum: A[(dn + 2 nmax) * (4 mmax + 1) + dm + 2 mmax],
+ * one such array per plane of an image stack, top plane first. */
 struct spectrum {
 	double lx, ly;
 	int mmax, nmax;         /* |dm| <= 2 mmax, |dn| <= 2 nmax */
-	double complex *a;
+	int nplanes;            /* 1 without a resist statement */
+	double complex *a;      /* nplanes arrays */
 	long pairs;             /* TCC pairs computed, for the progress line */
 };
+/* Plane k of a stack's spectrum as a one-plane spectrum (a view sharing
+ * the arrays: not to be freed) for image_at and image_grid. */
+struct spectrum spectrum_plane(const struct spectrum *sp, int k);
 
 /* Hopkins: the spectrum for orders o, pupil p, source s, normalised so
  * that a clear mask images to exactly 1.  Returns NULL if no light from

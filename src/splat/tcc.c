@@ -9,6 +9,12 @@
  * from TCC(f'', f') = TCC(f', f'')*.  The normaliser is the TCC of the
  * zero order with itself, computed by the same call as the pair (0, 0),
  * so that a clear mask images to exactly 1.
+ *
+ * An image stack (splat(5)'s resist statement) computes every plane in
+ * the same pass: each pair's source integral yields the TCC of all the
+ * planes at once (source.c), and each plane gets its own spectrum.  The
+ * depth phase cancels in TCC(0, 0), so one normaliser serves them all
+ * and a clear mask gives exactly 1 at every depth.
  */
 #include "splat.h"
 #include "util.h"
@@ -16,21 +22,37 @@
 #include <math.h>
 #include <stdlib.h>
 
-static double complex tcc(const struct pupil *p, const struct source *s,
-			  const struct quad *q, double f1x, double f1y,
-			  double f2x, double f2y)
+/* TCC(f', f'') of every plane into t[0 .. p->nplanes - 1]; row is
+ * scratch of as many values. */
+static void tcc(const struct pupil *p, const struct source *s,
+		const struct quad *q, double f1x, double f1y,
+		double f2x, double f2y, double complex *t, double complex *row)
 {
+	int np = p->nplanes;
 	if (s->coherent) {
 		/* a point source on axis: TCC = P(f') P*(f''); the orders kept
 		 * all lie inside the pupil (mask_orders with fmax = NA/lambda) */
 		double ph = pupil_phase(p, f1x, f1y) - pupil_phase(p, f2x, f2y);
-		return cos(ph) + I * sin(ph);
+		double dp = np > 1 ? pupil_depth(p, f1x, f1y) - pupil_depth(p, f2x, f2y) : 0;
+		t[0] = cos(ph) + I * sin(ph);
+		for (int k = 1; k < np; k++) {
+			double a = ph + k * p->dz * dp;
+			t[k] = cos(a) + I * sin(a);
+		}
+		return;
 	}
-	double complex t = 0;
-	for (int k = 0; k < s->ndisc; k++)
-		t += s->sign[k] * source_disc3(p, q, s->cx[k], s->cy[k], s->r[k],
-					       f1x, f1y, f2x, f2y);
-	return t;
+	for (int k = 0; k < np; k++)
+		t[k] = 0;
+	for (int k = 0; k < s->ndisc; k++) {
+		/* a disc's planes are summed apart, then added with its sign,
+		 * in the same order as a single image */
+		double complex *d = row + np;
+		for (int l = 0; l < np; l++)
+			d[l] = 0;
+		source_disc3_planes(p, q, s->cx[k], s->cy[k], s->r[k], f1x, f1y, f2x, f2y, d, row);
+		for (int l = 0; l < np; l++)
+			t[l] += s->sign[k] * d[l];
+	}
 }
 
 /* Below this the source sends no light through the pupil (an annulus or
@@ -40,35 +62,56 @@ static const double NORM_MIN = 1e-12;
 struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      const struct source *s, const struct quad *q)
 {
-	double norm = creal(tcc(p, s, q, 0, 0, 0, 0));
-	if (!(norm > NORM_MIN * M_PI * p->cutoff * p->cutoff) && !s->coherent)
+	int np = p->nplanes;
+	double complex *t = xreallocarray(NULL, 3 * (size_t)np, sizeof *t);
+	double complex *row = t + np;
+	/* TCC(0, 0) has no phase: the same normaliser for every plane */
+	tcc(p, s, q, 0, 0, 0, 0, t, row);
+	double norm = creal(t[0]);
+	if (!(norm > NORM_MIN * M_PI * p->cutoff * p->cutoff) && !s->coherent) {
+		free(t);
 		return NULL;
+	}
 	struct spectrum *sp = xcalloc(1, sizeof *sp);
 	sp->lx = o->lx;
 	sp->ly = o->ly;
 	sp->mmax = o->mmax;
 	sp->nmax = o->nmax;
+	sp->nplanes = np;
 	size_t w = 4 * (size_t)o->mmax + 1, h = 4 * (size_t)o->nmax + 1;
-	sp->a = xcalloc(w * h, sizeof *sp->a);
+	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
 	for (int i = 0; i < o->n; i++) {
 		if (o->c[i] == 0)
 			continue;
 		for (int j = i; j < o->n; j++) {
 			if (o->c[j] == 0)
 				continue;
-			double complex t = tcc(p, s, q, o->fx[i], o->fy[i], o->fx[j], o->fy[j]);
+			tcc(p, s, q, o->fx[i], o->fy[i], o->fx[j], o->fy[j], t, row);
 			sp->pairs++;
-			if (t == 0)
-				continue;
-			double complex v = t * o->c[i] * conj(o->c[j]) / norm;
 			int dm = o->m[i] - o->m[j], dn = o->k[i] - o->k[j];
-			sp->a[(size_t)(dn + 2 * o->nmax) * w + (size_t)(dm + 2 * o->mmax)] += v;
-			if (j != i)
-				sp->a[(size_t)(-dn + 2 * o->nmax) * w +
-				      (size_t)(-dm + 2 * o->mmax)] += conj(v);
+			size_t at = (size_t)(dn + 2 * o->nmax) * w + (size_t)(dm + 2 * o->mmax);
+			size_t mirror = (size_t)(-dn + 2 * o->nmax) * w + (size_t)(-dm + 2 * o->mmax);
+			for (int k = 0; k < np; k++) {
+				if (t[k] == 0)
+					continue;
+				double complex v = t[k] * o->c[i] * conj(o->c[j]) / norm;
+				double complex *a = sp->a + (size_t)k * w * h;
+				a[at] += v;
+				if (j != i)
+					a[mirror] += conj(v);
+			}
 		}
 	}
+	free(t);
 	return sp;
+}
+
+struct spectrum spectrum_plane(const struct spectrum *sp, int k)
+{
+	struct spectrum v = *sp;
+	v.a = sp->a + (size_t)k * (4 * (size_t)sp->mmax + 1) * (4 * (size_t)sp->nmax + 1);
+	v.nplanes = 1;
+	return v;
 }
 
 void spectrum_free(struct spectrum *sp)

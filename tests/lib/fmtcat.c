@@ -4,16 +4,18 @@
  * round trips (write -> read -> write is byte-identical) and feed every
  * reader a corpus of malformed files from the command line.
  *
- *   fmtcat contour|contour-old|plot2|plot3|options|rate|rate-ascii IN OUT
+ *   fmtcat contour|contour-old|stack|plot2|plot3|options|rate|rate-ascii IN OUT
  *
  * "options" uses a table with one keyword of every type: label (string),
  * grid (on/off), scale (number in [0.1, 1]), xticks (whole number in
- * [1, 20]), joinlevel (high|low).
+ * [1, 20]), joinlevel (high|low).  "stack" reads an image stack or a
+ * contour-file (fmt_stack_read) and writes it back as it came.
  */
 #include "fmt_contour.h"
 #include "fmt_options.h"
 #include "fmt_plot.h"
 #include "fmt_rate.h"
+#include "fmt_stack.h"
 #include "util.h"
 
 #include <stdio.h>
@@ -32,7 +34,7 @@ int main(int argc, char **argv)
 {
 	util_setprog(argv[0]);
 	if (argc != 4) {
-		fputs("usage: fmtcat contour|contour-old|plot2|plot3|options|rate|rate-ascii IN OUT\n", stderr);
+		fputs("usage: fmtcat contour|contour-old|stack|plot2|plot3|options|rate|rate-ascii IN OUT\n", stderr);
 		return EXIT_USAGE;
 	}
 	const char *t = argv[1], *in = argv[2], *out = argv[3];
@@ -44,6 +46,10 @@ int main(int argc, char **argv)
 		else
 			fmt_contour_write(out, c);
 		fmt_contour_free(c);
+	} else if (!strcmp(t, "stack")) {
+		struct image_stack *st = fmt_stack_read(in);
+		fmt_stack_write(out, st);
+		fmt_stack_free(st);
 	} else if (!strcmp(t, "plot2") || !strcmp(t, "plot3")) {
 		struct plot_file *pf = fmt_plot_read(in, t[4] - '0');
 		fmt_plot_write(out, pf);
