@@ -25,8 +25,10 @@ sample3D -q -if "$E/mask.in" -bf "$E/resist.in" -et 60 -pt 20 -solid
 contour -noplot -cstep 0.1 -tl "Aerial image, 1.25 um contact" image.cont; png aerial
 pdraw -noplot -h -nosort -e -tl "M = 0.8 after exposure and bake" mxyz.solid.3D; png solid
 pdraw -noplot -h -e -tl "Developed resist, 20, 40, 60 s" curves.plot; png profile-20s 1; png profile-60s
-# fem: Bossung curves and process window of a 7 x 7 matrix (README, "Focus-exposure matrices")
-fem -q -if "$E/mask.in" -bf "$E/resist.in" -et 60 -dose 50:110:10 -focus -3:3:1 \
-	-measure "-rel 10,90 -hole 0 0" -target 1.0 -tol 10 -j 2 >/dev/null
+# fem: Bossung curves and process window of a 7 x 7 matrix of the NA 0.6
+# contact (README, "Focus-exposure matrices")
+H=$TOP/examples/contact-highna
+fem -q -if "$H/mask.in" -bf "$H/resist.in" -et 60 -method fmm -dose 60:120:10 -focus -1.2:0.6:0.3 \
+	-measure "-rel 5,95 -hole 0 0" -target 0.42 -tol 10 -j 2 >/dev/null
 cp fem/bossung.ps dataplot.ps; png bossung
 cp fem/window.ps dataplot.ps; png window
