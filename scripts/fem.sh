@@ -195,14 +195,14 @@ command -v make >/dev/null 2>&1 || die "cannot find make (GNU make runs the swee
 chk=$(mktemp -d "${TMPDIR:-/tmp}/fem.XXXXXX") || die "cannot make a temporary directory"
 trap 'rm -rf "$chk"' EXIT
 "$FEMWIN" -probe "$mask" "$resist" -o "$chk/probe.plot" 2>"$chk/err" ||
-	die "$(sed -n '1s/^femwin: //p' "$chk/err")"
+	die "$(sed -n '1{s/^femwin: //;p;}' "$chk/err")"
 st=0
 # shellcheck disable=SC2086 # etchopts is a list of words on purpose
 "$ETCH" -q -et "$etchtime" $etchopts "$chk/no-such-rate-file" >/dev/null 2>"$chk/err" || st=$?
-[ $st -ne 2 ] || die "etch refuses the options \"-et $etchtime$etchopts\": $(sed -n '1s/^etch: //p' "$chk/err")"
+[ $st -ne 2 ] || die "etch refuses the options \"-et $etchtime$etchopts\": $(sed -n '1{s/^etch: //;p;}' "$chk/err")"
 # shellcheck disable=SC2086 # margs is a list of words on purpose
 "$MEASURE" $margs -o "$chk/measure.dat" "$chk/probe.plot" >/dev/null 2>"$chk/err" ||
-	die "measure refuses -measure \"$margs\": $(sed -n '1s/^measure: //p' "$chk/err")"
+	die "measure refuses -measure \"$margs\": $(sed -n '1{s/^measure: //;p;}' "$chk/err")"
 
 # DIR: the inputs (copied, so that the sweep does not change under a later
 # edit), the options each stage depends on, and the Makefile; a file is
