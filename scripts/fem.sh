@@ -142,7 +142,7 @@ for w in $margs; do
 	-o|-plot) badv "-measure: fem gives measure its output file; drop $w" ;;
 	esac
 done
-case $dir in *[!A-Za-z0-9._/+-]*) badv "-d $dir: use letters, digits and ._/+- only (make needs plain names)" ;; esac
+case $dir$(pwd)$here in *[!A-Za-z0-9._/+-]*) badv "-d $dir: use letters, digits and ._/+- only, in it and in the paths of the current directory and of fem (make needs plain names)" ;; esac
 
 # expand LIST: first:last:step or a,b,c -> one value per line, ascending
 expand() { # expand WHAT LIST
@@ -200,8 +200,14 @@ st=0
 # shellcheck disable=SC2086 # etchopts is a list of words on purpose
 "$ETCH" -q -et "$etchtime" $etchopts "$chk/no-such-rate-file" >/dev/null 2>"$chk/err" || st=$?
 [ $st -ne 2 ] || die "etch refuses the options \"-et $etchtime$etchopts\": $(sed -n '1{s/^etch: //;p;}' "$chk/err")"
-# shellcheck disable=SC2086 # margs is a list of words on purpose
-"$MEASURE" $margs -o "$chk/measure.dat" "$chk/probe.plot" >/dev/null 2>"$chk/err" ||
+# the probe has one set: measure's -s (a set of etch -pt) is left out there
+pargs="" skipnext=""
+for w in $margs; do
+	if [ -n "$skipnext" ]; then skipnext=""; continue; fi
+	case $w in -s) skipnext=yes ;; *) pargs="$pargs $w" ;; esac
+done
+# shellcheck disable=SC2086 # pargs is a list of words on purpose
+"$MEASURE" $pargs -o "$chk/measure.dat" "$chk/probe.plot" >/dev/null 2>"$chk/err" ||
 	die "measure refuses -measure \"$margs\": $(sed -n '1{s/^measure: //;p;}' "$chk/err")"
 
 # DIR: the inputs (copied, so that the sweep does not change under a later
