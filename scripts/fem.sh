@@ -309,11 +309,16 @@ S
 	printf '\t$(DRAWPLOT) -noplot -t bossung.tpl -tl "Bossung curves: cd against focus" \\\n'
 	printf '\t  -xl "focus (um)" -yl "cd (um)" -svg bossung.svg bossung.2D && mv -f dataplot.ps bossung.ps || exit 1; \\\n'
 	printf '\tif [ -n "$(TARGET)" ]; then \\\n'
-	printf '\t  $(FEMWIN) -target $(TARGET) -tol $(TOL) -o window.dat -plot window.2D fem.dat || exit 1; \\\n'
+	printf '\t  $(FEMWIN) -target $(TARGET) -tol $(TOL) -o window.dat -plot window.2D \\\n'
+	printf '\t    -region region.2D -region-template region.tpl fem.dat || exit 1; \\\n'
 	printf '\t  $(DRAWPLOT) -noplot -tl "process window: cd $(TARGET) um +- $(TOL) %%" \\\n'
 	printf '\t    -xl "exposure latitude (%%)" -yl "depth of focus (um)" -svg window.svg window.2D && \\\n'
 	printf '\t    mv -f dataplot.ps window.ps || exit 1; \\\n'
-	printf '\telse rm -f window.dat window.2D window.ps window.svg; fi; exit $$st\n'
+	printf '\t  $(DRAWPLOT) -noplot -t region.tpl -tl "in spec: cd $(TARGET) um +- $(TOL) %%" \\\n'
+	printf '\t    -xl "focus (um)" -yl "dose (mJ/cm2)" -svg region.svg region.2D && \\\n'
+	printf '\t    mv -f dataplot.ps region.ps || exit 1; \\\n'
+	printf '\telse rm -f window.dat window.2D window.ps window.svg region.2D region.tpl region.ps region.svg; \\\n'
+	printf '\tfi; exit $$st\n'
 } | put Makefile
 
 if [ -n "$slurm" ]; then

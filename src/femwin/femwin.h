@@ -25,10 +25,13 @@ struct femwin_spec {
 	double tol;     /* percent of target */
 };
 
-/* The process window of t: writes window.dat (and the window plot file
- * when plot_path is set) and prints the summary on stdout. */
+/* The process window of t: writes window.dat (and the EL/DOF plot file
+ * when plot_path is set, the in-spec region in (focus, dose) with the 5 %
+ * and 10 % EL rectangles and its drawplot template when region_path is)
+ * and prints the summary on stdout. */
 void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
-		   const char *name, const char *window_path, const char *plot_path);
+		   const char *name, const char *window_path, const char *plot_path,
+		   const char *region_path, const char *region_template);
 
 /* Writes an undeveloped resist surface (flat top over the mask window,
  * resist from -thickness to 0) as etch would, for checking measure's

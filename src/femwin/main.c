@@ -15,7 +15,8 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: femwin -target CD -tol PCT [-o window.dat] [-plot window.2D] fem.dat\n"
+	"usage: femwin -target CD -tol PCT [-o window.dat] [-plot window.2D]\n"
+	"              [-region region.2D [-region-template file]] fem.dat\n"
 	"       femwin -collect [-o fem.dat] [-bossung bossung.2D] [-template file]\n"
 	"              -p focus dose measure-table ...\n"
 	"       femwin -probe mask.in resist.in [-o probe.plot]\n"
@@ -24,6 +25,9 @@ static const char usage[] =
 	"  -o file          output: window.dat, fem.dat or the probe surface\n"
 	"                   (defaults window.dat, fem.dat, probe.plot)\n"
 	"  -plot file       the EL/DOF curve as a 2D plot file for drawplot\n"
+	"  -region file     the in-spec region in (focus, dose) and the 5 % and\n"
+	"                   10 % EL rectangles, as a 2D plot file\n"
+	"  -region-template file  drawplot template labelling those curves\n"
 	"  -collect         make fem.dat from the points' measure tables\n"
 	"  -p f d table     one point: focus (um), dose (mJ/cm2), measure's table\n"
 	"  -bossung file    cd against focus, one curve per dose (2D plot file)\n"
@@ -37,7 +41,7 @@ struct options {
 	enum mode mode;
 	double target, tol;
 	int have_target, have_tol;
-	const char *out, *plot, *bossung, *template, *fem;
+	const char *out, *plot, *bossung, *template, *fem, *region, *region_tpl;
 	const char *probe_mask, *probe_resist;
 	struct femwin_input *pts;
 	int npts;
@@ -95,6 +99,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			set_mode(&a, o, M_WINDOW, "-tol");
 			o->have_tol = 1;
 		} else if (args_str(&a, "-o", &o->out) || args_str(&a, "-plot", &o->plot) ||
+			   args_str(&a, "-region", &o->region) ||
+			   args_str(&a, "-region-template", &o->region_tpl) ||
 			   args_str(&a, "-bossung", &o->bossung) ||
 			   args_str(&a, "-template", &o->template)) {
 			;
@@ -115,17 +121,19 @@ static void parse_options(int argc, char **argv, struct options *o)
 			args_error(&a, "which fem.dat?");
 		if (o->bossung || o->template)
 			args_error(&a, "-bossung and -template belong to -collect");
+		if (o->region_tpl && !o->region)
+			args_error(&a, "-region-template goes with -region");
 		break;
 	case M_COLLECT:
 		if (o->npts == 0)
 			args_error(&a, "-collect needs at least one point (-p focus dose table)");
 		if (o->fem)
 			args_error(&a, "-collect takes its points with -p, not %s", o->fem);
-		if (o->plot)
-			args_error(&a, "-plot belongs to the process window");
+		if (o->plot || o->region || o->region_tpl)
+			args_error(&a, "-plot and -region belong to the process window");
 		break;
 	case M_PROBE:
-		if (o->fem || o->plot || o->bossung || o->template)
+		if (o->fem || o->plot || o->bossung || o->template || o->region || o->region_tpl)
 			args_error(&a, "-probe takes only -o");
 		break;
 	}
@@ -142,7 +150,8 @@ int main(int argc, char **argv)
 	case M_WINDOW: {
 		struct fem_table *t = fmt_fem_read(o.fem);
 		struct femwin_spec s = {o.target, o.tol};
-		femwin_window(t, &s, o.fem, o.out ? o.out : "window.dat", o.plot);
+		femwin_window(t, &s, o.fem, o.out ? o.out : "window.dat", o.plot, o.region,
+			      o.region_tpl);
 		fmt_fem_free(t);
 		break;
 	}

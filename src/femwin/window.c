@@ -24,6 +24,7 @@
  */
 #include "femwin.h"
 #include "fmt_plot.h"
+#include "fmt_template.h"
 #include "num.h"
 #include "util.h"
 
@@ -263,44 +264,147 @@ static int best_rect(const struct grid *g, double el, struct fem_window_row *r)
 	return 1;
 }
 
+/* The in-spec dose intervals at the focus F[i] + t (F[i+1] - F[i]), t in
+ * [0, 1): cd is linear in dose inside each usable cell, so they are exact;
+ * touching intervals join.  Writes up to cap (a, b) pairs to iv and
+ * returns their number. */
+static int dose_intervals(const struct grid *g, int i, double t, double *iv, int cap)
+{
+	int n = 0, open = 0, nd = g->nd;
+	for (int j = 0; j < nd - 1; j++) {
+		if (!good(g, i, j)) {
+			open = 0;
+			continue;
+		}
+		double v0 = g->cd[i * nd + j] + t * (g->cd[(i + 1) * nd + j] - g->cd[i * nd + j]);
+		double v1 = g->cd[i * nd + j + 1] +
+			    t * (g->cd[(i + 1) * nd + j + 1] - g->cd[i * nd + j + 1]);
+		double sa = 0, sb = 1;
+		clip_band(v0, v1, g->lo, g->hi, &sa, &sb);
+		if (sa > sb) {
+			open = 0;
+			continue;
+		}
+		double da = sa == 0 ? g->D[j] : g->D[j] + sa * (g->D[j + 1] - g->D[j]);
+		double db = sb == 1 ? g->D[j + 1] : g->D[j] + sb * (g->D[j + 1] - g->D[j]);
+		if (open && iv[2 * n - 1] == g->D[j] && da == g->D[j]) {
+			iv[2 * n - 1] = db;
+		} else if (n < cap) {
+			iv[2 * n] = da;
+			iv[2 * n + 1] = db;
+			n++;
+		}
+		open = db == g->D[j + 1];
+	}
+	return n;
+}
+
 /* The largest exposure latitude (percent) of the in-spec doses at any
  * focus; -1 if nothing is in spec. */
 static double max_el(const struct grid *g)
 {
 	double best = -1;
+	double *iv = xreallocarray(NULL, (size_t)g->nd * 2, sizeof *iv);
 	for (int i = 0; i < g->nf - 1; i++)
 		for (int s = 0; s < MAXEL_SAMPLES; s++) {
-			double t = (s + 0.5) / MAXEL_SAMPLES;
-			double a = 0, b = 0;
-			int open = 0;
-			for (int j = 0; j < g->nd - 1; j++) {
-				if (!good(g, i, j)) {
-					open = 0;
-					continue;
-				}
-				int nd = g->nd;
-				double v0 = g->cd[i * nd + j] + t * (g->cd[(i + 1) * nd + j] - g->cd[i * nd + j]);
-				double v1 = g->cd[i * nd + j + 1] +
-					    t * (g->cd[(i + 1) * nd + j + 1] - g->cd[i * nd + j + 1]);
-				double sa = 0, sb = 1;
-				clip_band(v0, v1, g->lo, g->hi, &sa, &sb);
-				if (sa > sb) {
-					open = 0;
-					continue;
-				}
-				double da = sa == 0 ? g->D[j] : g->D[j] + sa * (g->D[j + 1] - g->D[j]);
-				double db = sb == 1 ? g->D[j + 1] : g->D[j] + sb * (g->D[j + 1] - g->D[j]);
-				if (open && b == g->D[j] && da == g->D[j])
-					b = db;
-				else
-					a = da, b = db;
-				open = db == g->D[j + 1];
-				double e = 200 * (b - a) / (a + b);
+			int n = dose_intervals(g, i, (s + 0.5) / MAXEL_SAMPLES, iv, g->nd);
+			for (int k = 0; k < n; k++) {
+				double e = 200 * (iv[2 * k + 1] - iv[2 * k]) / (iv[2 * k] + iv[2 * k + 1]);
 				if (e > best)
 					best = e;
 			}
 		}
+	free(iv);
 	return best;
+}
+
+/* The in-spec region in (focus, dose) for drawplot: the rectangles of 5 %
+ * and 10 % EL (empty curves when there are none), then the outline of the
+ * region, one closed curve per run of focus samples that have in-spec
+ * doses (at each sample its longest in-spec dose interval), and a template
+ * that labels the first three. */
+enum { REGION_SAMPLES = 40 };
+
+static void write_region(const struct grid *g, const struct fem_window_row *r5, int have5,
+			 const struct fem_window_row *r10, int have10, const char *plot_path,
+			 const char *template_path)
+{
+	double b[4] = {g->F[0], g->F[g->nf - 1], g->D[0], g->D[g->nd - 1]};
+	struct plot_file *pf = fmt_plot_new(2);
+	struct plot_set *set = fmt_plot_add_set(pf, b);
+	const struct fem_window_row *rr[2] = {r5, r10};
+	int have[2] = {have5, have10};
+	for (int k = 0; k < 2; k++) {
+		const struct fem_window_row *r = rr[k];
+		double h = r->el / 200, f1 = r->focus - r->dof / 2, f2 = r->focus + r->dof / 2;
+		double d1 = r->dose * (1 - h), d2 = r->dose * (1 + h);
+		double p[10] = {f1, d1, f2, d1, f2, d2, f1, d2, f1, d1};
+		fmt_plot_add_curve(pf, set, have[k] ? 5 : 0, p);
+	}
+	int ns = (g->nf - 1) * REGION_SAMPLES + 1;
+	double *lo = xreallocarray(NULL, (size_t)ns * 3, sizeof *lo), *hi = lo + ns, *fs = hi + ns;
+	unsigned char *in = xcalloc((size_t)ns, 1);
+	double *iv = xreallocarray(NULL, (size_t)g->nd * 2, sizeof *iv);
+	for (int k = 0; k < ns; k++) {
+		int i = k / REGION_SAMPLES;
+		double t = (double)(k % REGION_SAMPLES) / REGION_SAMPLES;
+		if (i == g->nf - 1) {   /* the last focus: t = 1 of the last cell */
+			i--;
+			t = 1;
+		}
+		fs[k] = g->F[i] + t * (g->F[i + 1] - g->F[i]);
+		int n = dose_intervals(g, i, t, iv, g->nd);
+		double best = -1;
+		for (int m = 0; m < n; m++)
+			if (iv[2 * m + 1] - iv[2 * m] > best) {
+				best = iv[2 * m + 1] - iv[2 * m];
+				lo[k] = iv[2 * m];
+				hi[k] = iv[2 * m + 1];
+				in[k] = 1;
+			}
+	}
+	double *p = xreallocarray(NULL, (size_t)ns * 4 + 2, sizeof *p);
+	int pieces = 0;
+	for (int k = 0; k < ns;) {
+		if (!in[k]) {
+			k++;
+			continue;
+		}
+		int e = k;
+		while (e + 1 < ns && in[e + 1])
+			e++;
+		int m = 0;
+		for (int q = k; q <= e; q++) {
+			p[2 * m] = fs[q];
+			p[2 * m++ + 1] = lo[q];
+		}
+		for (int q = e; q >= k; q--) {
+			p[2 * m] = fs[q];
+			p[2 * m++ + 1] = hi[q];
+		}
+		p[2 * m] = fs[k];
+		p[2 * m++ + 1] = lo[k];
+		fmt_plot_add_curve(pf, set, m, p);
+		pieces++;
+		k = e + 1;
+	}
+	fmt_plot_write(plot_path, pf);
+	fmt_plot_free(pf);
+	if (template_path) {
+		/* one entry per curve, so that only the first outline is labelled */
+		static char l5[] = "5 % EL", l10[] = "10 % EL", lin[] = "in spec";
+		struct template t = {2 + pieces, xcalloc((size_t)(2 + pieces), sizeof *t.e)};
+		t.e[0] = (struct template_entry){1, 0, l5, 0};
+		t.e[1] = (struct template_entry){2, 0, l10, 0};
+		for (int k = 0; k < pieces; k++)
+			t.e[2 + k] = (struct template_entry){3, 0, k == 0 ? lin : NULL, 0};
+		fmt_template_write(template_path, &t);
+		free(t.e);
+	}
+	free(p);
+	free(iv);
+	free(in);
+	free(lo);
 }
 
 /* v rounded to a multiple of 1e-9 of its axis' range q, then to 9
@@ -333,7 +437,8 @@ static void report(const struct grid *g, const char *what, const struct fem_wind
 }
 
 void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
-		   const char *name, const char *window_path, const char *plot_path)
+		   const char *name, const char *window_path, const char *plot_path,
+		   const char *region_path, const char *region_template)
 {
 	struct grid g;
 	double tol = s->tol / 100 * s->target;
@@ -387,6 +492,8 @@ void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
 		fmt_plot_write(plot_path, pf);
 		fmt_plot_free(pf);
 	}
+	if (region_path)
+		write_region(&g, &r5, have5, &r10, have10, region_path, region_template);
 	printf("window: cd %.4g um +- %.4g %% (%.4g to %.4g um), %d foci x %d doses\n",
 	       s->target, s->tol, g.lo, g.hi, g.nf, g.nd);
 	report(&g, "5%", &r5, have5);
