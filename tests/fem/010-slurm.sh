@@ -28,7 +28,7 @@ background dark
 rect -0.6 -0.6 0.6 0.6
 M
 sed 's/^grid .*/grid nz 60/' "$E/resist.in" >resist.in
-set -- -if "$D/mask.in" -bf "$D/resist.in" -et 20 -dose 60,80 -focus -0.5,0.5 \
+set -- -if "$D/mask.in" -bf "$D/resist.in" -et 60 -dose 80,100 -focus -0.5,0.5 \
 	-measure "-rel 10 -hole 0 0" -q
 fem "$@" -j 2 -d local || fail "local sweep failed"
 
