@@ -8,7 +8,7 @@
  * may have small gaps and a surface that covers the box ends on the box
  * walls.  Instead a line across the section is cut where it crosses the
  * segments, and each stretch between crossings is classified by the
- * vertical-ray test at its middle.  The area of a region is the sum of
+ * vertical-ray test inside it.  The area of a region is the sum of
  * its stretches on closely spaced parallel lines (the midpoint rule
  * across the lines, exact along them), stretches on neighbouring lines
  * being joined into one region where they overlap (union-find).
@@ -68,11 +68,13 @@ void surf_section_free(struct surf_section *sec)
 
 /* Where segment a-b (2D) crosses the line: axis 0 is y = c, the position
  * returned is x; axis 1 is x = c, position y.  Returns 0 if it does not
- * cross (an end at or above c counts as above). */
+ * cross.  An end counts as beyond the line only if strictly beyond (> c),
+ * as in the ray test's crossing rule, so that a line through a vertex of
+ * the section is cut as the ray test sees it. */
 static int seg_cut(const double *a, const double *b, int axis, double c, double *pos)
 {
 	double pa = a[1 - axis], pb = b[1 - axis]; /* across the line */
-	if ((pa >= c) == (pb >= c))
+	if ((pa > c) == (pb > c))
 		return 0;
 	if (pa > pb) {
 		const double *q = a;
@@ -92,26 +94,91 @@ static int cmp_double(const void *x, const void *y)
 	return (a > b) - (a < b);
 }
 
+/* The kind of the point at t on the line: 1 resist, 0 developed. */
+static int kind_at(const struct surf *s, double z, int axis, double c, double t)
+{
+	return (axis == 0 ? surf_above(s, t, c, z) : surf_above(s, c, t, z)) & 1;
+}
+
+/* Where the kind changes between a (kind ka) and b, by bisection with the
+ * ray test, to 1e-13 of the box. */
+static double find_flip(const struct surf *s, double z, int axis, double c,
+			double a, int ka, double b, double tol)
+{
+	while (fabs(b - a) > tol) {
+		double m = 0.5 * (a + b);
+		if (m == a || m == b)
+			break;
+		if (kind_at(s, z, axis, c, m) == ka)
+			a = m;
+		else
+			b = m;
+	}
+	return 0.5 * (a + b);
+}
+
+static void push_span(struct surf_span **spans, size_t *cap, size_t *m,
+		      double lo, double hi, int resist)
+{
+	if (*m && (*spans)[*m - 1].resist == resist) {
+		(*spans)[*m - 1].hi = hi;
+		return;
+	}
+	xgrow(spans, cap, *m + 1, sizeof **spans);
+	(*spans)[(*m)++] = (struct surf_span){lo, hi, resist};
+}
+
+/* Sample points of a stretch between two cuts, as fractions of it: near
+ * both ends and at three irrational places inside. */
+enum { NSAMPLE = 5 };
+static const double sample_at[NSAMPLE] = {
+	1e-4, 0.5 - 0.2071067811865476, 0.5, 0.5 + 0.2071067811865476, 1 - 1e-4};
+
 /* Spans of a line from sorted cut positions cut[0..n-1], between lo and
- * hi, classified at their middles and merged. */
+ * hi, merged.  Each stretch between cuts is classified by the ray test at
+ * its sample points.  Normally they agree.  Where they do not, either the
+ * section has a gap (an open border left by delooping lets the line pass
+ * a wall without a cut) or a point fell exactly on the surface where the
+ * line touches the section without crossing it; the ray test, which needs
+ * no closed curve, then decides: the stretch is split where its answer
+ * changes (bisection), and pieces shorter than SPAN_MIN of the box (a
+ * touching point) are dropped. */
+#define SPAN_MIN 1e-9
 static size_t spans_from_cuts(const struct surf *s, double z, int axis, double c,
 			      const double *cut, size_t n, double lo, double hi,
 			      struct surf_span **spans, size_t *cap)
 {
 	size_t m = 0;
-	double prev = lo;
+	double prev = lo, tol = 1e-13 * (hi - lo), shortest = SPAN_MIN * (hi - lo);
 	for (size_t k = 0; k <= n; k++) {
 		double next = k < n ? fmin(fmax(cut[k], lo), hi) : hi;
 		if (!(next > prev))
 			continue;
-		double mid = 0.5 * (prev + next);
-		int r = axis == 0 ? surf_above(s, mid, c, z) : surf_above(s, c, mid, z);
-		r &= 1;
-		if (m && (*spans)[m - 1].resist == r) {
-			(*spans)[m - 1].hi = next;
+		double t[NSAMPLE];
+		int kind[NSAMPLE], same = 1;
+		for (int i = 0; i < NSAMPLE; i++) {
+			t[i] = prev + sample_at[i] * (next - prev);
+			kind[i] = kind_at(s, z, axis, c, t[i]);
+			same &= kind[i] == kind[0];
+		}
+		if (same) {
+			push_span(spans, cap, &m, prev, next, kind[0]);
 		} else {
-			xgrow(spans, cap, m + 1, sizeof **spans);
-			(*spans)[m++] = (struct surf_span){prev, next, r};
+			double a = prev;
+			for (int i = 0; i + 1 < NSAMPLE; i++) {
+				if (kind[i] == kind[i + 1])
+					continue;
+				double f = find_flip(s, z, axis, c, t[i], kind[i], t[i + 1], tol);
+				/* a piece too short joins the next one */
+				if (f - a >= shortest) {
+					push_span(spans, cap, &m, a, f, kind[i]);
+					a = f;
+				}
+			}
+			if (next - a < shortest && m > 0 && (*spans)[m - 1].hi == a)
+				(*spans)[m - 1].hi = next;
+			else
+				push_span(spans, cap, &m, a, next, kind[NSAMPLE - 1]);
 		}
 		prev = next;
 	}

@@ -172,10 +172,10 @@ int main(int argc, char **argv)
 	if (!o.force) {
 		long n = surf_crossings(s, CROSS_REPORT_MAX);
 		if (n > 0)
-			die("%s: set %ld: the surface crosses itself (%s%ld crossings: loops "
+			die("%s: set %ld: the surface crosses itself (%s%ld crossing%s: loops "
 			    "left where etch fronts met); rerun etch with -deloop, "
 			    "or give measure -force", o.input, setno,
-			    n >= CROSS_REPORT_MAX ? "at least " : "", n);
+			    n >= CROSS_REPORT_MAX ? "at least " : "", n, n == 1 ? "" : "s");
 	}
 	surf_index(s);
 
