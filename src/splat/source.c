@@ -240,26 +240,42 @@ void source_disc3_planes(const struct pupil *p, const struct quad *q,
 			double xm = 0.5 * (a + b), xh = 0.5 * (b - a);
 			for (int l = 0; l < np; l++)
 				row[l] = 0;
+			/* per node: the top plane's integrand (er, ei) and the turn
+			 * of one plane step (cs, ss) */
+			double *er = (double *)(row + np), *ei = er + q->ninner;
+			double *cs = ei + q->ninner, *ss = cs + q->ninner;
 			for (int ii = 0; ii < q->ninner; ii++) {
 				double x = xm + xh * q->ui[ii];
-				double ph = pupil_phase(p, x + f1x, y + f1y) -
-					pupil_phase(p, x + f2x, y + f2y);
-				double c = cos(ph), sn = sin(ph);
+				double c = 1, sn = 0;
+				if (!p->flat) {
+					double ph = pupil_phase(p, x + f1x, y + f1y) -
+						pupil_phase(p, x + f2x, y + f2y);
+					c = cos(ph);
+					sn = sin(ph);
+				}
 				row[0] += q->wi[ii] * (c + I * sn);
 				if (np == 1)
 					continue;
-				/* plane l adds l times the depth phase of one step:
-				 * rotate the integrand by it, plane after plane */
 				double dp = p->dz * (pupil_depth(p, x + f1x, y + f1y) -
 						     pupil_depth(p, x + f2x, y + f2y));
-				double cs = cos(dp), ss = sin(dp);
-				double er = q->wi[ii] * c, ei = q->wi[ii] * sn;
-				for (int l = 1; l < np; l++) {
-					double re = er * cs - ei * ss;
-					ei = er * ss + ei * cs;
-					er = re;
-					row[l] += er + I * ei;
+				er[ii] = q->wi[ii] * c;
+				ei[ii] = q->wi[ii] * sn;
+				cs[ii] = cos(dp);
+				ss[ii] = sin(dp);
+			}
+			/* plane l adds l times the depth phase of one step: turn
+			 * every node's integrand by it, plane after plane (the
+			 * nodes are independent, so the loop pipelines) */
+			for (int l = 1; l < np; l++) {
+				double sr = 0, si = 0;
+				for (int ii = 0; ii < q->ninner; ii++) {
+					double re = er[ii] * cs[ii] - ei[ii] * ss[ii];
+					ei[ii] = er[ii] * ss[ii] + ei[ii] * cs[ii];
+					er[ii] = re;
+					sr += re;
+					si += ei[ii];
 				}
+				row[l] = sr + I * si;
 			}
 			for (int l = 0; l < np; l++)
 				sums[l] += wy * xh * row[l];

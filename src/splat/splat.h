@@ -98,7 +98,8 @@ double complex source_disc3(const struct pupil *p, const struct quad *q,
 			    double f1x, double f1y, double f2x, double f2y);
 /* The same for every plane of the pupil at once, added to sum[k] for
  * k < p->nplanes: the region and the quadrature nodes are shared, only
- * the depth phase differs; row is scratch of p->nplanes values. */
+ * the depth phase differs; row is scratch of p->nplanes + 2 q->ninner
+ * values. */
 void source_disc3_planes(const struct pupil *p, const struct quad *q,
 			 double cx, double cy, double r,
 			 double f1x, double f1y, double f2x, double f2y,

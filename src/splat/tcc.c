@@ -23,7 +23,7 @@
 #include <stdlib.h>
 
 /* TCC(f', f'') of every plane into t[0 .. p->nplanes - 1]; row is
- * scratch of as many values. */
+ * scratch of 2 p->nplanes + 2 q->ninner values. */
 static void tcc(const struct pupil *p, const struct source *s,
 		const struct quad *q, double f1x, double f1y,
 		double f2x, double f2y, double complex *t, double complex *row)
@@ -46,10 +46,11 @@ static void tcc(const struct pupil *p, const struct source *s,
 	for (int k = 0; k < s->ndisc; k++) {
 		/* a disc's planes are summed apart, then added with its sign,
 		 * in the same order as a single image */
-		double complex *d = row + np;
+		double complex *d = row;
 		for (int l = 0; l < np; l++)
 			d[l] = 0;
-		source_disc3_planes(p, q, s->cx[k], s->cy[k], s->r[k], f1x, f1y, f2x, f2y, d, row);
+		source_disc3_planes(p, q, s->cx[k], s->cy[k], s->r[k], f1x, f1y, f2x, f2y, d,
+				    row + np);
 		for (int l = 0; l < np; l++)
 			t[l] += s->sign[k] * d[l];
 	}
@@ -63,7 +64,7 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      const struct source *s, const struct quad *q)
 {
 	int np = p->nplanes;
-	double complex *t = xreallocarray(NULL, 3 * (size_t)np, sizeof *t);
+	double complex *t = xreallocarray(NULL, 3 * (size_t)np + 2 * (size_t)q->ninner, sizeof *t);
 	double complex *row = t + np;
 	/* TCC(0, 0) has no phase: the same normaliser for every plane */
 	tcc(p, s, q, 0, 0, 0, 0, t, row);
