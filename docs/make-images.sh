@@ -30,3 +30,11 @@ pdraw -noplot -h -nosort -e -tl "M = 0.8 after exposure and bake" mxyz.solid.3D;
 png profile-20s 1 profile.ps
 png profile-60s 3 profile.ps
 png cut "" cut.ps
+# fem: Bossung curves and process window of a 7 x 7 matrix of the NA 0.6
+# contact (README, "Focus-exposure matrices")
+H=$TOP/examples/contact-highna
+fem -q -if "$H/mask.in" -bf "$H/resist.in" -et 60 -method fmm -dose 60:120:10 -focus -1.2:0.6:0.3 \
+	-measure "-rel 5,95 -hole 0 0" -target 0.42 -tol 10 -j 2 >/dev/null
+cp fem/bossung.ps dataplot.ps; png bossung
+cp fem/window.ps dataplot.ps; png window
+cp fem/region.ps dataplot.ps; png region

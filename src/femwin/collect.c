@@ -1,0 +1,155 @@
+/*
+ * collect.c - one focus-exposure matrix from its points' measure tables:
+ * fem.dat (focus outer, dose inner, ascending), and the Bossung plot (cd
+ * against focus, one curve per dose) with a drawplot template that labels
+ * the curves by dose.  A point whose feature is absent at the measured
+ * height (cd 0) is left out of its curve, as a Bossung plot shows printed
+ * features only; a dose with none keeps an empty curve, so that the
+ * template's labels stay with their doses.
+ *
+ * A point whose table does not exist (its stage failed, or it has not run
+ * yet) is left out of fem.dat and counted; a table that exists but is not
+ * a measure table is an error, since it means something else went wrong.
+ */
+#include "femwin.h"
+#include "fmt_plot.h"
+#include "fmt_template.h"
+#include "num.h"
+#include "util.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int cmp_point(const void *pa, const void *pb)
+{
+	const struct fem_point *a = pa, *b = pb;
+	if (a->focus != b->focus)
+		return a->focus < b->focus ? -1 : 1;
+	if (a->dose != b->dose)
+		return a->dose < b->dose ? -1 : 1;
+	return 0;
+}
+
+static int cmp_double(const void *pa, const void *pb)
+{
+	double a = *(const double *)pa, b = *(const double *)pb;
+	return a < b ? -1 : a > b;
+}
+
+/* Curve styles: line types 1-10 and markers that stay visible when the
+ * curves overlap (square, diamond, triangles, circle, x; white then black). */
+static const int markers[] = {2, 5, 8, 11, 14, 17, 4, 7, 10, 13, 16};
+enum { NMARKERS = sizeof markers / sizeof markers[0] };
+
+static void write_bossung(const struct fem_table *t, const char *plot_path,
+			  const char *template_path)
+{
+	double *doses = xreallocarray(NULL, (size_t)t->n, sizeof *doses);
+	for (int i = 0; i < t->n; i++)
+		doses[i] = t->p[i].dose;
+	qsort(doses, (size_t)t->n, sizeof *doses, cmp_double);
+	int nd = 0;
+	for (int i = 0; i < t->n; i++)
+		if (nd == 0 || doses[i] != doses[nd - 1])
+			doses[nd++] = doses[i];
+	double b[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+	for (int i = 0; i < t->n; i++) {
+		b[0] = fmin(b[0], t->p[i].focus);
+		b[1] = fmax(b[1], t->p[i].focus);
+		if (t->p[i].cd > 0) {
+			b[2] = fmin(b[2], t->p[i].cd);
+			b[3] = fmax(b[3], t->p[i].cd);
+		}
+	}
+	if (b[2] > b[3]) {  /* nothing printed anywhere */
+		b[2] = 0;
+		b[3] = 1;
+	}
+	if (plot_path) {
+		struct plot_file *pf = fmt_plot_new(2);
+		struct plot_set *s = fmt_plot_add_set(pf, b);
+		double *xy = xreallocarray(NULL, (size_t)t->n * 2, sizeof *xy);
+		for (int k = 0; k < nd; k++) {
+			int m = 0;
+			for (int i = 0; i < t->n; i++)   /* rows are in focus order */
+				if (t->p[i].dose == doses[k] && t->p[i].cd > 0) {
+					xy[2 * m] = t->p[i].focus;
+					xy[2 * m + 1] = t->p[i].cd;
+					m++;
+				}
+			fmt_plot_add_curve(pf, s, m, xy);
+		}
+		free(xy);
+		fmt_plot_write(plot_path, pf);
+		fmt_plot_free(pf);
+	}
+	if (template_path) {
+		struct template tp;
+		tp.n = nd;
+		tp.e = xcalloc((size_t)nd, sizeof *tp.e);
+		for (int k = 0; k < nd; k++) {
+			char num[NUM_BUFSZ], label[NUM_BUFSZ + 16];
+			snprintf(label, sizeof label, "%s mJ/cm2", num_fmt(num, doses[k]));
+			tp.e[k].ln_type = 1 + k % 10;
+			tp.e[k].mkr_type = markers[k % NMARKERS];
+			tp.e[k].label = xstrdup(label);
+		}
+		fmt_template_write(template_path, &tp);
+		for (int k = 0; k < nd; k++)
+			free(tp.e[k].label);
+		free(tp.e);
+	}
+	free(doses);
+}
+
+int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
+		   const char *bossung_path, const char *template_path)
+{
+	struct fem_table t = {0, NULL};
+	t.p = xreallocarray(NULL, (size_t)(n > 0 ? n : 1), sizeof *t.p);
+	int missing = 0;
+	const struct femwin_input *first_missing = NULL;
+	for (int i = 0; i < n; i++) {
+		if (access(in[i].table, F_OK) != 0) {
+			if (errno != ENOENT)
+				die("%s: cannot read:", in[i].table);
+			if (!missing++)
+				first_missing = &in[i];
+			continue;
+		}
+		struct fem_measure m;
+		fmt_fem_read_measure(in[i].table, &m);
+		struct fem_point *p = &t.p[t.n++];
+		p->focus = in[i].focus;
+		p->dose = in[i].dose;
+		p->cd = m.cd;
+		p->swa = m.swa;
+		p->cleared = m.cleared;
+		p->loss = m.loss;
+	}
+	qsort(t.p, (size_t)t.n, sizeof *t.p, cmp_point);
+	for (int i = 1; i < t.n; i++)
+		if (cmp_point(&t.p[i - 1], &t.p[i]) == 0)
+			die_status(EXIT_USAGE, "the point focus %g dose %g is given twice",
+				   t.p[i].focus, t.p[i].dose);
+	if (t.n == 0) {
+		free(t.p);
+		die("no point has a result yet (%d missing, the first %s)", missing,
+		    n > 0 ? in[0].table : "-");
+	}
+	fmt_fem_write(fem_path, &t);
+	if (bossung_path || template_path)
+		write_bossung(&t, bossung_path, template_path);
+	if (missing) {
+		char f[NUM_BUFSZ], d[NUM_BUFSZ];
+		warn("%d of %d points have no result (the first: focus %s dose %s, %s); %s holds the other %d",
+		     missing, n, num_fmt(f, first_missing->focus), num_fmt(d, first_missing->dose),
+		     first_missing->table, fem_path, t.n);
+	}
+	free(t.p);
+	return missing;
+}
