@@ -36,6 +36,14 @@ expect_error splat -q in.txt
 [ "$(cat image.cont)" = old ] || fail "splat replaced the image before failing on its cutline"
 ls | grep -q tmp && fail "temporaries left: $(ls)"
 
+# pdraw: a -svg that cannot be written leaves dataplot.ps as it was
+printf '0 1 0 1 0 1\n1\n4\n0 0 0\n1 0 0\n0 1 1\n0 0 0\n' >t.3D
+echo old >dataplot.ps
+expect_error pdraw -noplot -svg nodir/x.svg t.3D
+[ "$(cat dataplot.ps)" = old ] || fail "pdraw replaced dataplot.ps before failing on -svg"
+pdraw -noplot -svg x.svg t.3D 2>/dev/null || fail "pdraw -svg failed"
+[ -s x.svg ] && [ "$(cat dataplot.ps)" != old ] || fail "pdraw did not write both outputs"
+
 # signals during etch: a slow run (many small steps), stopped after a second
 MKRATE=$BUILD/tests/lib/mkrate
 [ -x "$MKRATE" ] || skip "mkrate not built"
