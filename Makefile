@@ -108,10 +108,10 @@ asan:
 bench: all
 	@sh tests/bench/run.sh $(BUILD)
 
-# every file reader under libFuzzer (tests/fuzz/fuzz.sh, HACKING.md)
+# every file reader under libFuzzer (tests/fuzz/targets/fuzz.sh, HACKING.md)
 FUZZ_SECONDS ?= 60
 fuzz:
-	sh tests/fuzz/fuzz.sh run build-fuzz $(FUZZ_SECONDS)
+	sh tests/fuzz/targets/fuzz.sh run build-fuzz $(FUZZ_SECONDS)
 
 run: all
 	@cd examples/contact && PATH="$(CURDIR)/$(BUILD)/bin:$$PATH" sh ./run.sh

@@ -1,9 +1,9 @@
 #!/bin/sh
-# tests/fuzz/fuzz.sh - the libFuzzer harness of every file reader (issue 14).
+# tests/fuzz/targets/fuzz.sh - the libFuzzer harness of every file reader (issue 14).
 #
-#   sh tests/fuzz/fuzz.sh build DIR          build DIR/fuzz_READER for each reader
-#   sh tests/fuzz/fuzz.sh run DIR SECONDS    build, then fuzz each reader SECONDS
-#   sh tests/fuzz/fuzz.sh once DIR           build, then run each target over its
+#   sh tests/fuzz/targets/fuzz.sh build DIR          build DIR/fuzz_READER for each reader
+#   sh tests/fuzz/targets/fuzz.sh run DIR SECONDS    build, then fuzz each reader SECONDS
+#   sh tests/fuzz/targets/fuzz.sh once DIR           build, then run each target over its
 #                                            seeds and the regress files once
 #
 # `make fuzz [FUZZ_SECONDS=60]` is "run build-fuzz $(FUZZ_SECONDS)".
@@ -18,7 +18,7 @@ set -u
 mode=${1:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 secs=${3:-60}
-top=$(cd "$(dirname "$0")/../.." && pwd)
+top=$(cd "$(dirname "$0")/../../.." && pwd)
 CLANG=${FUZZ_CC:-clang}
 READERS="splat bleach contour plot2d plot3d options template rate_ascii rate_binary"
 FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11 -I$top/src/lib"
