@@ -3,7 +3,7 @@
 #   FIFO) is written in place, never renamed over;
 # - a program with several outputs (splat: image and cutlines) commits
 #   none until all succeed;
-# - SIGINT, SIGTERM and SIGHUP during etch remove its temporaries and the
+# - SIGINT, SIGTERM, SIGHUP and SIGPIPE during etch remove its temporaries and the
 #   exit status is 128+n.
 . "$TOP/tests/lib/common.sh"
 cat >in.txt <<'IN'
@@ -48,11 +48,11 @@ pdraw -noplot -svg x.svg t.3D 2>/dev/null || fail "pdraw -svg failed"
 MKRATE=$BUILD/tests/lib/mkrate
 [ -x "$MKRATE" ] || skip "mkrate not built"
 $MKRATE -o r.bin 6 6 6 0 1 0 1 0 1 0.01 || fail "mkrate"
-for sig in INT TERM HUP; do
+for sig in INT TERM HUP PIPE; do
 	rm -f curves.plot*
 	timeout -s $sig --preserve-status 1 etch -q -et 1e6 -dt 1 r.bin
 	st=$?
-	case $sig in INT) want=130 ;; TERM) want=143 ;; HUP) want=129 ;; esac
+	case $sig in INT) want=130 ;; TERM) want=143 ;; HUP) want=129 ;; PIPE) want=141 ;; esac
 	[ $st -eq $want ] || fail "etch after SIG$sig: exit $st, expected $want"
 	ls | grep -q 'curves.*tmp' && fail "SIG$sig left temporaries: $(ls)"
 done
