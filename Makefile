@@ -4,6 +4,7 @@
 #   make check      build and run every test (tests/run.sh)
 #   make asan       the same under address and undefined-behaviour sanitizers
 #   make bench      performance figures (tests/bench/*.sh)
+#   make fuzz       libFuzzer run of every reader, FUZZ_SECONDS each (clang)
 #   make run        the bundled example end to end
 #   make install PREFIX=/usr/local
 #   make NO_X11=1   build without the X11 preview
@@ -57,7 +58,7 @@ BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D $(BUILD)/bin/fem
 TEST_SRC := $(wildcard tests/*/*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all check asan bench run install clean regen
+.PHONY: all check asan bench run install clean regen fuzz
 all: $(BINS) $(TEST_BIN)
 
 $(BUILD)/%.o: %.c
@@ -112,6 +113,11 @@ asan:
 bench: all
 	@sh tests/bench/run.sh $(BUILD)
 
+# every file reader under libFuzzer (tests/fuzz/targets/fuzz.sh, HACKING.md)
+FUZZ_SECONDS ?= 60
+fuzz:
+	sh tests/fuzz/targets/fuzz.sh run build-fuzz $(FUZZ_SECONDS)
+
 run: all
 	@cd examples/contact && PATH="$(CURDIR)/$(BUILD)/bin:$$PATH" sh ./run.sh
 
@@ -129,6 +135,6 @@ install: all
 	cp man/man5/*.5 $(DESTDIR)$(PREFIX)/share/man/man5/
 
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan build-fuzz
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -14,9 +14,11 @@
  * the table against direct runs at the same doses.
  */
 #include "bleach.h"
+#include "checked.h"
 #include "util.h"
 
 #include <assert.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,6 +66,10 @@ int exposure_init(struct exposure *e, const struct bleach_input *in, int nz,
 		return -1;
 	}
 	e->h = dmax > 0 ? dmax / steps : 1;
+	/* a dose so small that dmax / steps underflows (4e-324 mJ/cm2):
+	 * one step of the whole dose, which exposes nothing measurable */
+	if (!(e->h >= DBL_MIN))
+		e->h = dmax > 0 ? dmax : 1;
 	return 0;
 }
 
@@ -150,8 +156,8 @@ struct dose_table *dose_table_build(struct exposure *e, double dmax)
 	t->nz = n;
 	t->h = e->h;
 	double nd = dmax > 0 ? ceil(dmax / e->h * (1 - 1e-12)) : 0;
-	assert(nd <= EXPOSE_MAX_STEPS);  /* exposure_init checked the steps */
-	t->nd = (int)nd;
+	/* exposure_init bounded the steps; checked all the same */
+	t->nd = ck_int(nd, 0, (int)EXPOSE_MAX_STEPS, "exposure steps");
 	size_t rows = (size_t)t->nd + 1;
 	t->M = xreallocarray(NULL, rows * (size_t)n, sizeof *t->M);
 	t->dM = xreallocarray(NULL, rows * (size_t)n, sizeof *t->dM);

@@ -13,6 +13,7 @@
  * full array, then the rates.
  */
 #include "args.h"
+#include "budget.h"
 #include "bleach.h"
 #include "fmt_bleach.h"
 #include "fmt_contour.h"
@@ -27,16 +28,24 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] contour-file bleach-inputfile\n"
+	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-big]\n"
+	"              contour-file bleach-inputfile\n"
 	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
 	"  -solid         also write mxyz.solid.3D, the surface M = level, for pdraw\n"
 	"  -m level       M of that surface (default 0.8)\n"
 	"  -o rate-file   name of the rate array file\n"
 	"  -q             no progress lines on stderr\n"
-	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n";
+	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n"
+	"  -big           run work estimated beyond the limits (an hour, the\n"
+	"                 machine's memory; also SAMPLE3D_BIG=1)\n";
 
 /* Largest -dose, mJ/cm2: bleach(5)'s bound on the dose statement. */
 static const double DOSE_MAX = 1e6;
+
+/* Seconds per rate point (exposure lookup, bake, development rate) and
+ * per number written, measured on the development machine; bytes per
+ * point (rate, M, the 3D bake's scratch, the dose of a column). */
+static const double T_POINT = 3e-7, T_OUT = 1e-6, B_POINT = 32;
 
 /* Largest grid: two arrays of doubles (rate and M) at 1 GB together. */
 #define BLEACH_MAX_POINTS (1L << 26)
@@ -65,6 +74,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->solid = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
+		else if (args_flag(&a, "-big"))
+			budget_allow_big();
 		else if (args_num(&a, "-m", 0, 1, &o->level))
 			;
 		else if (args_str(&a, "-o", &o->output))
@@ -156,6 +167,11 @@ int main(int argc, char **argv)
 	if (npts > BLEACH_MAX_POINTS)
 		die("%s:%ld: grid of %.0f points is too large (at most %ld)", o.input,
 		    in.line_nz ? in.line_nz : 1L, npts, BLEACH_MAX_POINTS);
+	char what[64];
+	snprintf(what, sizeof what, "%.3g rate points", npts);
+	budget_check(o.input, what, npts * (T_POINT + 2 * T_OUT), npts * B_POINT);
+	/* the rate file and mxyz.solid.3D are committed together (util.h) */
+	aout_defer();
 	double bounds[6] = {c->xmin, c->xmax, c->ymin, c->ymax, -in.thick, 0};
 	struct ratefile *r = held.r = fmt_rate_new(nx, ny, nz, bounds);
 	double *M = fmt_rate_add_array(r, "M");
@@ -251,6 +267,7 @@ int main(int argc, char **argv)
 		progress("wrote mxyz.solid.3D (%ld triangles, M = %g)", ntri, o.level);
 	}
 
+	aout_finish();
 	free(col);
 	free(dose);
 	dose_table_free(t);

@@ -5,6 +5,7 @@
  * man/man1/etch.1 and etch.h.
  */
 #include "args.h"
+#include "budget.h"
 #include "etch.h"
 #include "fmm.h"
 #include "fmt_plot.h"
@@ -24,7 +25,8 @@ static const char usage[] =
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
-	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] rate-file\n"
+	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
+	"            rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -55,7 +57,9 @@ static const char usage[] =
 	"  -vtk file.vtp    also write the surfaces as VTK XML PolyData (ParaView)\n"
 	"  -check           check the mesh's consistency after every step\n"
 	"  -n               check the command line only: read and write nothing\n"
-	"  -q               no progress or summary on stderr\n";
+	"  -q               no progress or summary on stderr\n"
+	"  -big             run work estimated beyond the limits (an hour, the\n"
+	"                   machine's memory; also SAMPLE3D_BIG=1)\n";
 
 static int parse3(struct args *a, const char *opt, double v[3])
 {
@@ -159,6 +163,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->dryrun = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
+		else if (args_flag(&a, "-big"))
+			budget_allow_big();
 		else if (parse3(&a, "-seed", o->seedp[o->seed < ETCH_MAX_SEEDS ? o->seed
 							       : ETCH_MAX_SEEDS - 1])) {
 			if (o->seed < ETCH_MAX_SEEDS)
@@ -388,6 +394,41 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 	fmm_free(fm);
 }
 
+/* Seconds per triangle and time step of the ray-string engine, and per
+ * (refined) grid node of fast marching, measured on the development
+ * machine; bytes per triangle (with its nodes and segments) and per
+ * fast-marching node. */
+static const double T_TRI_STEP = 6e-7, T_FMM_NODE = 2e-6, B_TRI = 400, B_FMM_NODE = 48;
+
+/* The estimate of the run before it starts (budget.h): time steps times
+ * the triangles of the start, or the refined grid of fast marching. */
+static void estimate(const struct ratefile *r, const struct rfield *f,
+		     const struct etch_opts *o)
+{
+	char what[128];
+	double secs, bytes;
+	double sets = o->pt > 0 ? ceil(o->et / o->pt) : 1;
+	if (o->method == METHOD_FMM || o->xcheck) {
+		int refine[3];
+		refinement(r, o, refine);
+		double pts = (double)r->nx * r->ny * r->nz * refine[0] * refine[1] * refine[2];
+		snprintf(what, sizeof what, "%.3g fast-marching nodes", pts);
+		budget_check(o->input, what, pts * T_FMM_NODE, pts * B_FMM_NODE + sets * 16);
+		if (o->method == METHOD_FMM)
+			return;
+	}
+	double seg = o->seg > 0 ? o->seg : etch_default_seg(f);
+	double dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
+	double steps = fmax(o->et / dt, sets);
+	double wx = f->hi[0] - f->lo[0], wy = f->hi[1] - f->lo[1], wz = f->hi[2] - f->lo[2];
+	double tris = o->seed ? 20.0 * o->seed : 2 * (wx / seg + 1) * (wy / (seg * sqrt(3) / 2) + 1);
+	double bound = ETCH_MESH_FACTOR * 2 * (wx * wy + wx * wz + wy * wz) / (sqrt(3) / 4 * seg * seg);
+	secs = steps * tris * T_TRI_STEP;
+	bytes = fmin(bound, 1e9) * B_TRI + sets * 16;
+	snprintf(what, sizeof what, "%.3g time steps of a mesh of %.3g triangles", steps, tris);
+	budget_check(o->input, what, secs, bytes);
+}
+
 int main(int argc, char **argv)
 {
 	struct etch_opts o;
@@ -400,12 +441,22 @@ int main(int argc, char **argv)
 	struct rfield f;
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);
+	estimate(r, &f, &o);
+	/* curves.plot, its .2D and the cut are committed together (util.h) */
+	aout_defer();
 	if (o.method == METHOD_FMM) {
 		run_fmm(r, &f, &o);
+		aout_finish();
 	} else {
 		struct etch_stats st = {0};
 		o.rate = r;
 		struct mesh *m = etch_run(&f, &o, &st);
+		aout_finish();
+		if (!o.quiet && st.capped)
+			fprintf(stderr, "%s: the mesh reached its bound of %ld triangles "
+				"(%d times the box's faces): %ld cuts not made; the rate "
+				"varies faster than S_ideal %g um resolves\n", util_prog(),
+				st.max_live_tri, ETCH_MESH_FACTOR, st.capped, st.seg);
 		if (!o.quiet) {
 			fprintf(stderr, "%s: done: %g s in %ld steps of %g s (%s); S_ideal %g um\n",
 				util_prog(), o.et, st.steps, st.dt,

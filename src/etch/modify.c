@@ -119,7 +119,10 @@ void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 			if (len[j] > len[hi]) hi = j;
 			if (len[j] < len[lo]) lo = j;
 		}
-		if (len[hi] > smax) {
+		if (len[hi] > smax && st->max_live_tri > 0 &&
+		    (long)m->live_tri >= st->max_live_tri) {
+			st->capped++;   /* the mesh is at its bound (etch.h) */
+		} else if (len[hi] > smax) {
 			cut(m, f, tr->s[hi], o->linear);
 			st->cuts++;
 			ops++;

@@ -13,9 +13,13 @@
  */
 #include "etch.h"
 
+#include "checked.h"
 #include "deloop.h"
 #include "fmm.h"
+#include "progress.h"
 #include "util.h"
+
+#include <limits.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -83,6 +87,12 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 	st->seg = seg;
 	st->dt_grad = f->gmax > 0 ? 1 / f->gmax : 0;
 	st->dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
+	/* the bound of the mesh (ETCH_MESH_FACTOR) */
+	double wx = f->hi[0] - f->lo[0], wy = f->hi[1] - f->lo[1], wz = f->hi[2] - f->lo[2];
+	double faces = 2 * (wx * wy + wx * wz + wy * wz);
+	st->max_live_tri = (long)fmin(ETCH_MESH_FACTOR * faces / (sqrt(3) / 4 * seg * seg) + 1000, 1e9);
+	struct progress prog;
+	progress_begin(&prog, "time steps", o->quiet);
 	struct mesh *m = mesh_new();
 	for (int k = 0; k < o->seed; k++)
 		start_seed(m, o->seedp[k]);
@@ -109,7 +119,9 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		if (tp > o->et * (1 - 1e-12))
 			tp = o->et;
 		double span = tp - t;
-		long n = (long)ceil(span / st->dt * (1 - 1e-12));
+		/* checked: a huge rate gives a step count beyond a long */
+		long n = ck_long(ceil(span / st->dt * (1 - 1e-12)), LONG_MIN / 2, LONG_MAX / 2,
+				 "time steps");
 		if (n < 1)
 			n = 1;
 		for (long i = 1; i <= n; i++) {
@@ -127,8 +139,15 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 			mesh_compact(m);
 			st->steps++;
 			note_size(m, st);
+			if ((long)m->live_tri > 2 * st->max_live_tri)
+				die("%s: at t = %g s the mesh grew past its bound of %ld triangles "
+				    "(%d times the box's faces in S_ideal triangles): the rate varies "
+				    "faster than S_ideal %g um resolves (a spike?); try -method fmm",
+				    o->input ? o->input : "etch", t + i * (span / n),
+				    2 * st->max_live_tri, ETCH_MESH_FACTOR, seg);
 			if (o->check)
 				check(m, st->steps);
+			progress_step(&prog, t + i * (span / n), o->et);
 		}
 		t = tp;
 		out_write(out, m);

@@ -15,6 +15,7 @@
  */
 #include "etch.h"
 
+#include "checked.h"
 #include "util.h"
 
 #include <math.h>
@@ -29,11 +30,11 @@ static const double down[3] = {0, 0, -1};
 void start_flat(struct mesh *m, const struct rfield *f, double seg)
 {
 	double xw = f->hi[0] - f->lo[0], yw = f->hi[1] - f->lo[1];
-	int nx = (int)ceil(xw / seg - 1e-9), ny = (int)ceil(yw / (seg * sqrt(3) / 2) - 1e-9);
-	if (nx < 1) nx = 1;
-	if (ny < 1) ny = 1;
-	if ((double)nx * ny > 5e7)
-		die("-seg %g gives too many nodes for the box", seg);
+	/* the guard before any cast: bounds of 1e308 overflow an int */
+	double dnx = fmax(ceil(xw / seg - 1e-9), 1), dny = fmax(ceil(yw / (seg * sqrt(3) / 2) - 1e-9), 1);
+	if (!(dnx * dny <= 5e7))
+		die("-seg %g gives too many nodes for the box (%.3g)", seg, dnx * dny);
+	int nx = ck_int(dnx, 1, 50000000, "mesh columns"), ny = ck_int(dny, 1, 50000000, "mesh rows");
 	double hx = xw / nx, hy = yw / ny;
 	int *prev = NULL, *cur = NULL;
 	double *prevx = NULL, *curx = NULL;

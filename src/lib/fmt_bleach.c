@@ -326,6 +326,17 @@ static void parse(struct lex *lx, struct bleach_input *in)
 		    lex_name(lx), p.seen[S_BAKE]);
 	if (in->nz == 0)
 		in->nz = fmt_bleach_default_nz(in);
+	/* the standing waves must be sampled (two points a period at least):
+	 * a 700 um resist on 300 points is most likely 700 nm */
+	double period = in->wavelength / (2 * in->index);
+	double dz = in->thick / (in->nz - 1);
+	if (in->standing && dz > period / 2)
+		die("%s:%ld: resist thickness %g um on %d points is %g um a point, more than "
+		    "half the standing-wave period %g um%s", lex_name(lx),
+		    in->line_nz && in->line_nz > p.seen[S_RESIST] ? in->line_nz : p.seen[S_RESIST],
+		    in->thick, in->nz, dz, period,
+		    in->thick > 20 ? ": nanometres? (or more points with grid nz)" :
+		    " (more points with grid nz)");
 }
 
 int fmt_bleach_default_nz(const struct bleach_input *in)

@@ -1,5 +1,6 @@
 /* fmt_contour.c - see fmt_contour.h. */
 #include "fmt_contour.h"
+#include "checked.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
@@ -75,7 +76,7 @@ struct contour *fmt_contour_parse(struct lex *lx, const char *first, int old)
 	}
 	/* grow as values arrive: a header claiming a huge grid allocates
 	 * only what the file really holds */
-	size_t want = (size_t)nx * (size_t)ny, cap = 0, n = 0;
+	size_t want = ck_mul((size_t)nx, (size_t)ny, "contour grid points"), cap = 0, n = 0;
 	double *z = NULL;
 	while (n < want) {
 		const char *t = lex_token(lx);

@@ -5,6 +5,7 @@
 #include "util.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -82,11 +83,12 @@ void fmt_options_read(const char *path, const struct opt_spec *spec,
 		case OPT_INT:
 			if (!num_parse(v, &x))
 				lex_error(lx, "%s: expected a number, found \"%.40s\"", s->key, v);
-			if (s->type == OPT_INT && x != (double)(long)x)
-				lex_error(lx, "%s: expected a whole number, found \"%.40s\"", s->key, v);
+			/* the range first: casting 1e30 to long is undefined */
 			if (x < s->min || x > s->max)
 				lex_error(lx, "%s: %.40s is out of range [%g, %g]",
 					  s->key, v, s->min, s->max);
+			if (s->type == OPT_INT && x != floor(x))
+				lex_error(lx, "%s: expected a whole number, found \"%.40s\"", s->key, v);
 			o->num = x;
 			break;
 		case OPT_STRING:

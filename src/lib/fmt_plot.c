@@ -1,5 +1,6 @@
 /* fmt_plot.c - see fmt_plot.h. */
 #include "fmt_plot.h"
+#include "checked.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
@@ -53,7 +54,7 @@ struct plot_file *fmt_plot_read(const char *path, int dim)
 		for (long c = 0; c < nc; c++) {
 			long np = lex_count(lx, "npts", 0, PLOT_MAX_COUNT);
 			/* grow as points arrive, never by the claimed count */
-			size_t cap = 0, n = 0, want = (size_t)np * (size_t)dim;
+			size_t cap = 0, n = 0, want = ck_mul((size_t)np, (size_t)dim, "plot points");
 			double *p = NULL;
 			while (n < want) {
 				double v = lex_numberf(lx, "%s of point %zu of curve %ld",

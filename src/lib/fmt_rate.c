@@ -18,6 +18,7 @@
  *   then per array: its name on a line, then its values, nx per line.
  */
 #include "fmt_rate.h"
+#include "checked.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
@@ -173,11 +174,17 @@ static struct ratefile *read_binary(const char *name, const unsigned char *buf, 
 	for (int d = 0; d < 3; d++)
 		if (n[d] < 2 || n[d] > RATE_MAX_N)
 			die("%s:1: bad grid size %lu in binary rate file", name, (unsigned long)n[d]);
-	/* the exact length the header implies, computed without overflow
-	 * (each factor is below 2^20 and na below 8) */
-	uint64_t pts = (uint64_t)n[0] * n[1] * n[2];
-	uint64_t need = HDR_FIXED + 8ull * na + 8ull * pts * na + 4;
-	if ((uint64_t)len != need)
+	/* the exact length the header implies, by checked arithmetic: with
+	 * 2^20 points a side and 2 arrays 8 pts na is 2^64, which wraps to 0
+	 * and would let a 96-byte file ask for 8 EiB */
+	size_t pts, need;
+	if (!ck_mul_ok((size_t)n[0] * n[1], n[2], &pts) || !ck_mul_ok(pts, 8 * (size_t)na, &need) ||
+	    need > SIZE_MAX - HDR_FIXED - 8 * (size_t)na - 4)
+		die("%s:1: binary rate file header claims a %lu x %lu x %lu grid of %lu arrays, "
+		    "more bytes than can exist (corrupt)", name, (unsigned long)n[0],
+		    (unsigned long)n[1], (unsigned long)n[2], (unsigned long)na);
+	need += HDR_FIXED + 8 * (size_t)na + 4;
+	if (len != need)
 		die("%s:1: binary rate file is %zu bytes, its header says %llu "
 		    "(truncated or corrupt)", name, len, (unsigned long long)need);
 	uint32_t crc = get_u32(buf + len - 4);

@@ -24,6 +24,25 @@
 enum { SPLAT_MAX_GRID = 10001, SPLAT_MAX_CUTPTS = 1000000 };
 /* Highest fringe Zernike term implemented (the usual 37-term set). */
 enum { SPLAT_MAX_ZERNIKE = 37 };
+/* What a lithography user can mean (man/man5/splat.5): wavelengths from
+ * EUV (0.0135 um) to the near infrared, defocus within tens of
+ * micrometres, aberrations within tens of waves.  A value a thousand
+ * times too large is most likely in nanometres: the message says so. */
+static const double WAVE_MIN = 0.01, WAVE_MAX = 2, DEFOCUS_MAX = 50, ABERR_MAX = 100;
+
+/* Dies "kw V is outside [lo, hi] UNIT" with a "nanometres?" hint when
+ * v / 1000 would have been in range. */
+static void in_range(struct lex *lx, const char *kw, double v, double lo, double hi,
+		     const char *unit)
+{
+	if (v >= lo && v <= hi)
+		return;
+	if (fabs(v) / 1000 >= lo && fabs(v) / 1000 <= hi)
+		lex_error(lx, "%s %g is outside [%g, %g] %s: nanometres? (%g nm is %g um)",
+			  kw, v, lo, hi, unit, v, v / 1000);
+	lex_error(lx, "%s %g is outside [%g, %g] %s", kw, v, lo, hi, unit);
+}
+
 /* Slack when checking that a rect lies inside the window, relative to
  * the window size: inputs written with a few decimals must pass. */
 static const double WINDOW_SLACK = 1e-9;
@@ -66,6 +85,7 @@ static void field_term(struct lex *lx, struct splat_input *in, size_t *cap,
 		lex_error(lx, "%s: expected \"%s w field hx hy\" (w in waves, field "
 			  "point as a fraction of the field radius)", tok[0], tok[0]);
 	double w = number(lx, tok[0], "the aberration in waves", tok[1]);
+	in_range(lx, tok[0], w, -ABERR_MAX, ABERR_MAX, "waves");
 	double hx = number(lx, tok[0], "field hx", tok[3]);
 	double hy = number(lx, tok[0], "field hy", tok[4]);
 	if (hypot(hx, hy) > 1 + 1e-12)
@@ -132,7 +152,7 @@ struct splat_input *fmt_splat_read(const char *path)
 	struct splat_input *in = xcalloc(1, sizeof *in);
 	size_t acap = 0, rcap = 0, ccap = 0;
 	int have_window = 0;
-	long window_line = 0;
+	long window_line = 0, source_line = 0;
 	in->wavelength = 0.436;
 	in->na = 0.28;
 	in->source = SPLAT_SRC_CIRCLE;
@@ -153,6 +173,7 @@ struct splat_input *fmt_splat_read(const char *path)
 			in->wavelength = number(lx, kw, "a wavelength in micrometres", tok[1]);
 			if (!(in->wavelength > 0))
 				lex_error(lx, "wavelength must be positive");
+			in_range(lx, kw, in->wavelength, WAVE_MIN, WAVE_MAX, "um");
 		} else if (strcasecmp(kw, "na") == 0) {
 			want(lx, kw, n, 1, 1, "na value");
 			in->na = number(lx, kw, "a numerical aperture", tok[1]);
@@ -165,6 +186,7 @@ struct splat_input *fmt_splat_read(const char *path)
 				lex_error(lx, "sigma must not be negative, found %g", s);
 			in->source = SPLAT_SRC_CIRCLE;
 			in->sigma = s;
+			source_line = lex_lineno(lx);
 		} else if (strcasecmp(kw, "annular") == 0) {
 			want(lx, kw, n, 2, 2, "annular s_in s_out");
 			double a = number(lx, kw, "s_in", tok[1]);
@@ -174,6 +196,7 @@ struct splat_input *fmt_splat_read(const char *path)
 			in->source = SPLAT_SRC_ANNULAR;
 			in->s_in = a;
 			in->s_out = b;
+			source_line = lex_lineno(lx);
 		} else if (strcasecmp(kw, "quadrupole") == 0 || strcasecmp(kw, "dipole") == 0) {
 			int quad = strcasecmp(kw, "quadrupole") == 0;
 			if (quad)
@@ -198,9 +221,11 @@ struct splat_input *fmt_splat_read(const char *path)
 			in->source = quad ? SPLAT_SRC_QUADRUPOLE : SPLAT_SRC_DIPOLE;
 			in->pole_c = c;
 			in->pole_r = r;
+			source_line = lex_lineno(lx);
 		} else if (strcasecmp(kw, "defocus") == 0) {
 			want(lx, kw, n, 1, 1, "defocus micrometres");
 			in->defocus = number(lx, kw, "a defocus in micrometres", tok[1]);
+			in_range(lx, kw, in->defocus, -DEFOCUS_MAX, DEFOCUS_MAX, "um");
 		} else if (strcasecmp(kw, "resist") == 0) {
 			resist_stack(lx, in, tok, n);
 		} else if (strcasecmp(kw, "coma") == 0) {
@@ -214,6 +239,7 @@ struct splat_input *fmt_splat_read(const char *path)
 		} else if (strcasecmp(kw, "spherical") == 0) {
 			want(lx, kw, n, 1, 1, "spherical w");
 			double w = number(lx, kw, "the aberration in waves", tok[1]);
+			in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
 			add_aberr(in, &acap, SPLAT_AB_SPHERICAL, w, 0, 0, 0, lex_lineno(lx));
 		} else if (strcasecmp(kw, "zernike") == 0) {
 			want(lx, kw, n, 2, 2, "zernike N c");
@@ -222,6 +248,7 @@ struct splat_input *fmt_splat_read(const char *path)
 				lex_error(lx, "zernike: expected a fringe term number 1 to %d, "
 					  "found \"%.40s\"", SPLAT_MAX_ZERNIKE, tok[1]);
 			double w = number(lx, kw, "a coefficient in waves", tok[2]);
+			in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
 			add_aberr(in, &acap, SPLAT_AB_ZERNIKE, w, 0, 0, (int)z, lex_lineno(lx));
 		} else if (strcasecmp(kw, "background") == 0) {
 			if (n == 2 && strcasecmp(tok[1], "dark") == 0) {
@@ -305,6 +332,14 @@ struct splat_input *fmt_splat_read(const char *path)
 	/* whole-file checks */
 	if (!have_window)
 		lex_error(lx, "no window statement (the simulation cell is required)");
+	/* a source direction must propagate: sine sigma NA at most 1 (a
+	 * source of sigma 45 at NA 0.28 is light from beyond the horizon) */
+	double smax = in->source == SPLAT_SRC_CIRCLE ? in->sigma
+		    : in->source == SPLAT_SRC_ANNULAR ? in->s_out : in->pole_c + in->pole_r;
+	if (smax * in->na > 1)
+		die("%s:%ld: the source reaches %g NA = %g, beyond the sine of 90 degrees "
+		    "(the largest source radius times NA must be at most 1)",
+		    lex_name(lx), source_line ? source_line : 1L, smax, smax * in->na);
 	const struct splat_mask *m = &in->mask;
 	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
 	double sy = WINDOW_SLACK * (m->ymax - m->ymin);

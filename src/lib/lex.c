@@ -192,6 +192,9 @@ const char *lex_token(struct lex *lx)
 	memcpy(lx->tok, lx->buf + start, n);
 	lx->tok[n] = '\0';
 	lx->line = lx->nextline;
+	/* a NUL would silently end the token: "80\0 9" must not read as 80 */
+	if (memchr(lx->buf + start, '\0', n))
+		lex_error(lx, "NUL byte in the input (a binary file?)");
 	return lx->tok;
 }
 
@@ -290,6 +293,10 @@ int lex_line(struct lex *lx, char ***tokens, const int **quoted)
 		if (lx->pos < lx->len)
 			lx->pos++; /* the newline */
 		lx->line = lx->nextline++;
+		/* a NUL would silently end the line: "dose 80\0 9" is an error,
+		 * as "dose 80 9" is */
+		if (memchr(lx->buf + start, '\0', n))
+			lex_error(lx, "NUL byte in the line (a binary file?)");
 		xgrow(&lx->lbuf, &lx->lbufcap, n + 1, 1);
 		memcpy(lx->lbuf, lx->buf + start, n);
 		lx->lbuf[n] = '\0';

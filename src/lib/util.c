@@ -1,10 +1,14 @@
 /*
  * util.c - see util.h.  The list of open temporaries is a small array:
- * a program has at most a handful of outputs open at once.
+ * a program has at most a handful of outputs open at once.  The signal
+ * handler reads that array, so every change to it is made with the
+ * signals blocked, and the handler calls only unlink, signal and raise
+ * (async-signal-safe).
  */
 #include "util.h"
 
 #include <errno.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -17,8 +21,58 @@ static int die_code = EXIT_RUNTIME;
 
 void util_set_die_status(int status) { die_code = status; }
 
+static void (*die_hook)(int);
+void util_set_die_hook(void (*hook)(int status)) { die_hook = hook; }
+
 enum { MAX_TEMPS = 32 };
-static char *temps[MAX_TEMPS];
+static char *volatile temps[MAX_TEMPS];
+/* aout_defer: committed temporaries waiting for aout_finish */
+static int deferring;
+static char *pend_tmp[MAX_TEMPS], *pend_path[MAX_TEMPS];
+static int npend;
+
+static const int catch_sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+enum { NCATCH = sizeof catch_sigs / sizeof catch_sigs[0] };
+
+static void on_signal(int sig)
+{
+	for (int i = 0; i < MAX_TEMPS; i++)
+		if (temps[i])
+			unlink(temps[i]);
+	signal(sig, SIG_DFL);
+	raise(sig);
+}
+
+static void catch_signals(void)
+{
+	static int done;
+	if (done)
+		return;
+	done = 1;
+	for (int i = 0; i < NCATCH; i++) {
+		struct sigaction sa, old;
+		if (sigaction(catch_sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+			continue;   /* nohup, or a parent that ignores SIGPIPE */
+		memset(&sa, 0, sizeof sa);
+		sa.sa_handler = on_signal;
+		sigemptyset(&sa.sa_mask);
+		sigaction(catch_sigs[i], &sa, NULL);
+	}
+}
+
+/* Blocks (on = 1) or restores the caught signals around changes to temps. */
+static void block(int on, sigset_t *saved)
+{
+	if (on) {
+		sigset_t s;
+		sigemptyset(&s);
+		for (int i = 0; i < NCATCH; i++)
+			sigaddset(&s, catch_sigs[i]);
+		sigprocmask(SIG_BLOCK, &s, saved);
+	} else {
+		sigprocmask(SIG_SETMASK, saved, NULL);
+	}
+}
 
 void util_setprog(const char *argv0)
 {
@@ -30,12 +84,16 @@ const char *util_prog(void) { return progname; }
 
 static void remove_temps(void)
 {
+	sigset_t saved;
+	block(1, &saved);
 	for (int i = 0; i < MAX_TEMPS; i++)
 		if (temps[i]) {
-			remove(temps[i]);
-			free(temps[i]);
+			char *t = temps[i];
+			remove(t);
 			temps[i] = NULL;
+			free(t);
 		}
+	block(0, &saved);
 }
 
 static void vmsg(const char *fmt, va_list ap)
@@ -57,6 +115,8 @@ void die(const char *fmt, ...)
 	vmsg(fmt, ap);
 	va_end(ap);
 	remove_temps();
+	if (die_hook)
+		die_hook(die_code);
 	exit(die_code);
 }
 
@@ -67,6 +127,8 @@ void die_status(int status, const char *fmt, ...)
 	vmsg(fmt, ap);
 	va_end(ap);
 	remove_temps();
+	if (die_hook)
+		die_hook(status);
 	exit(status);
 }
 
@@ -140,22 +202,54 @@ void fshut(FILE *f, const char *name)
 
 static int add_temp(const char *tmp)
 {
+	char *copy = xstrdup(tmp);
+	sigset_t saved;
+	block(1, &saved);
 	for (int i = 0; i < MAX_TEMPS; i++)
 		if (!temps[i]) {
-			temps[i] = xstrdup(tmp);
+			temps[i] = copy;
+			block(0, &saved);
 			return i;
 		}
+	block(0, &saved);
+	free(copy);
 	die("too many output files open at once");
 }
 
 static void drop_temp(const char *tmp)
 {
+	sigset_t saved;
+	block(1, &saved);
 	for (int i = 0; i < MAX_TEMPS; i++)
 		if (temps[i] && strcmp(temps[i], tmp) == 0) {
-			free(temps[i]);
+			char *t = temps[i];
 			temps[i] = NULL;
-			return;
+			free(t);
+			break;
 		}
+	block(0, &saved);
+}
+
+/* Renames the temporary over the target, with the signals blocked so
+ * that a signal cannot remove a file that is already the target. */
+static void rename_temp(const char *tmp, const char *path)
+{
+	sigset_t saved;
+	block(1, &saved);
+	if (rename(tmp, path) != 0) {
+		block(0, &saved);
+		die("%s: cannot rename:", path);
+	}
+	drop_temp(tmp);
+	block(0, &saved);
+}
+
+/* 1 if path exists and is not a regular file (a device, a FIFO, or a
+ * link to one): such a target is written in place, never replaced. */
+static int special_target(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0 && !S_ISREG(st.st_mode);
 }
 
 struct aout *aout_open(const char *path)
@@ -166,13 +260,25 @@ struct aout *aout_open(const char *path)
 		a->f = stdout;
 		return a;
 	}
+	catch_signals();
+	if (special_target(path)) {
+		if (!(a->f = fopen(path, "w")))
+			die("%s: cannot open:", path);
+		a->inplace = 1;
+		return a;
+	}
 	size_t n = strlen(path) + 16;
 	a->tmp = xmalloc(n);
 	snprintf(a->tmp, n, "%s.tmpXXXXXX", path);
+	sigset_t saved;
+	block(1, &saved);   /* no signal between creating and listing it */
 	int fd = mkstemp(a->tmp);
-	if (fd < 0)
+	if (fd < 0) {
+		block(0, &saved);
 		die("%s: cannot create:", path);
+	}
 	add_temp(a->tmp);
+	block(0, &saved);
 	a->f = fdopen(fd, "w");
 	if (!a->f)
 		die("%s: cannot open:", path);
@@ -181,7 +287,9 @@ struct aout *aout_open(const char *path)
 
 void aout_commit(struct aout *a)
 {
-	if (!a->tmp) {
+	if (a->inplace) {
+		fshut(a->f, a->path);
+	} else if (!a->tmp) {
 		fshut(a->f, "stdout");
 	} else {
 		fshut(a->f, a->path);
@@ -190,18 +298,42 @@ void aout_commit(struct aout *a)
 		umask(m);
 		if (chmod(a->tmp, 0666 & ~m) != 0)
 			die("%s: cannot set mode:", a->path);
-		if (rename(a->tmp, a->path) != 0)
-			die("%s: cannot rename:", a->path);
-		drop_temp(a->tmp);
+		if (deferring) {
+			if (npend >= MAX_TEMPS)
+				die("too many output files held at once");
+			pend_tmp[npend] = a->tmp;
+			pend_path[npend++] = a->path;
+			free(a);
+			return;
+		}
+		rename_temp(a->tmp, a->path);
 	}
 	free(a->tmp);
 	free(a->path);
 	free(a);
 }
 
+void aout_defer(void)
+{
+	deferring = 1;
+}
+
+void aout_finish(void)
+{
+	for (int i = 0; i < npend; i++) {
+		rename_temp(pend_tmp[i], pend_path[i]);
+		free(pend_tmp[i]);
+		free(pend_path[i]);
+	}
+	npend = 0;
+	deferring = 0;
+}
+
 void aout_abort(struct aout *a)
 {
-	if (a->tmp) {
+	if (a->inplace) {
+		fclose(a->f);
+	} else if (a->tmp) {
 		fclose(a->f);
 		remove(a->tmp);
 		drop_temp(a->tmp);

@@ -25,6 +25,11 @@ const char *util_prog(void);
  * 1 means something else (plotdiff: "files differ") set another. */
 void util_set_die_status(int status);
 
+/* For fuzzing harnesses only (tests/fuzz/): called by die() after the
+ * message and the removal of temporaries, instead of exit; it must not
+ * return (a longjmp back into the harness).  NULL restores exit. */
+void util_set_die_hook(void (*hook)(int status));
+
 /* "prog: message\n" on stderr and exit(1).  A format ending in ':'
  * appends strerror(errno). */
 _Noreturn void die(const char *fmt, ...)
@@ -50,14 +55,28 @@ void xgrow(void *pp, size_t *cap, size_t need, size_t size);
 void fshut(FILE *f, const char *name);
 
 /* Atomic output file: writes go to a temporary beside path; aout_commit
- * checks every write and the close, then renames over path. */
+ * checks every write and the close, then renames over path.
+ * A target that exists and is not a regular file (a device such as
+ * /dev/null, a FIFO, or a symbolic link to one) is written in place: it
+ * is never renamed over.
+ * The first aout_open installs handlers for SIGINT, SIGTERM, SIGHUP and
+ * SIGPIPE (unless ignored) that remove every temporary and then die of
+ * the same signal, so the shell sees the usual status 128+n. */
 struct aout {
 	FILE *f;        /* write here */
 	char *path;     /* the target ("-" for stdout) */
-	char *tmp;      /* the temporary, NULL for stdout */
+	char *tmp;      /* the temporary, NULL for stdout or in place */
+	int inplace;    /* 1: the target itself is written (not a regular file) */
 };
 struct aout *aout_open(const char *path);
 void aout_commit(struct aout *a);   /* dies on any error; frees a */
 void aout_abort(struct aout *a);    /* removes the temporary; frees a */
+
+/* A program with several outputs commits none until all succeed: after
+ * aout_defer, aout_commit checks and closes the temporary but leaves the
+ * rename to aout_finish, which renames every output held so far (a die()
+ * before it removes them all, and every old target stays as it was). */
+void aout_defer(void);
+void aout_finish(void);
 
 #endif

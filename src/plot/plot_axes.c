@@ -20,6 +20,11 @@
  * printed data, e.g. 0.30000000000000004). */
 #define SNAP_TOL 1e-9
 
+/* The narrowest axis range, relative to its largest value and absolute:
+ * far below any plotted detail, far above the denormals whose tick steps
+ * underflow. */
+static const double AXIS_MIN_REL = 1e-12, AXIS_MIN_ABS = 1e-280;
+
 double plot_nice_step(double lo, double hi, int ndiv)
 {
 	double span = fabs(hi - lo);
@@ -48,6 +53,15 @@ void plot_axis_linear(struct plot_axis *ax, double lo, double hi, int ndiv, int 
 		double w = fabs(lo) > 0 ? fabs(lo) * 0.1 : 1;
 		lo -= w;
 		hi += w;
+	}
+	/* a range narrower than the numbers resolve (a denormal width such
+	 * as 0 to 5e-324 would make the tick step NaN): open it to
+	 * AXIS_MIN_REL of its magnitude, and at least AXIS_MIN_ABS */
+	double minw = fmax(fmax(fabs(lo), fabs(hi)) * AXIS_MIN_REL, AXIS_MIN_ABS);
+	if (!(hi - lo >= minw)) {
+		double mid = lo / 2 + hi / 2;
+		lo = mid - minw / 2;
+		hi = mid + minw / 2;
 	}
 	if (autorange) {
 		double step = plot_nice_step(lo, hi, ndiv);

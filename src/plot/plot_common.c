@@ -259,12 +259,16 @@ void plot_output(const struct plot_settings *s, const struct plot_cmd *c,
 		return;
 	}
 	struct draw *d = render(ctx);
+	/* the PostScript and the SVG are committed together (util.h): a
+	 * failing -svg must not leave dataplot.ps replaced */
+	aout_defer();
 	if (s->postscript) {
 		struct draw_ps_opts po = {s->scale, d->w > d->h, s->toplabel};
 		draw_write_ps(d, s->psfile, &po);
 	}
 	if (s->svg)
 		draw_write_svg(d, s->svg);
+	aout_finish();
 	draw_free(d);
 	if (s->postscript && (s->printplot || ask_print()))
 		print_ps(s->printer, s->psfile);

@@ -8,6 +8,7 @@
  * -1e-17 where the intensity |E|^2 is zero; it is clamped to 0.
  */
 #include "splat.h"
+#include "progress.h"
 #include "util.h"
 
 #include <math.h>
@@ -48,7 +49,10 @@ void image_grid(const struct spectrum *sp, double xmin, double xmax, double ymin
 		for (size_t im = 0; im < w; im++)
 			ex[(size_t)i * w + im] = cis(2 * M_PI * ((double)im - 2 * sp->mmax) * x / sp->lx);
 	}
+	struct progress prog;
+	progress_begin(&prog, "image rows", splat_quiet);
 	for (int j = 0; j < ny; j++) {
+		progress_step(&prog, j, ny);
 		double y = ymin + (ymax - ymin) * j / (ny - 1);
 		for (size_t jn = 0; jn < h; jn++)
 			ey[jn] = cis(2 * M_PI * ((double)jn - 2 * sp->nmax) * y / sp->ly);

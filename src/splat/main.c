@@ -7,6 +7,7 @@
  * image stack, man/man5/stack.5) and any cutlines as 2D plot files.
  */
 #include "args.h"
+#include "budget.h"
 #include "fmt_contour.h"
 #include "fmt_plot.h"
 #include "fmt_splat.h"
@@ -21,10 +22,12 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: splat [-o contour-file] [-q] [-name] [-defocus d] input-file\n"
+	"usage: splat [-o contour-file] [-q] [-big] [-name] [-defocus d] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
 	"  -q               quiet: no progress lines on stderr\n"
+	"  -big             run work estimated beyond the limits (an hour, the\n"
+	"                   machine's memory; also SAMPLE3D_BIG=1)\n"
 	"  -defocus d       defocus in micrometres, replacing the input's defocus\n"
 	"  -name            print the name of the contour-file it would write, and\n"
 	"                   exit (for scripts such as sample3D)\n";
@@ -37,9 +40,10 @@ struct options {
 	const char *input;
 };
 
-/* Largest |defocus| accepted on the command line, micrometres: a
- * millimetre is beyond any use, and keeps the phase finite. */
-static const double DEFOCUS_MAX = 1e3;
+/* Largest |defocus| accepted on the command line, micrometres: the same
+ * bound as splat(5)'s defocus statement (50 um is beyond any depth of
+ * focus; 500 is a slip of nanometres). */
+static const double DEFOCUS_MAX = 50;
 
 static void parse_options(int argc, char **argv, struct options *o)
 {
@@ -51,6 +55,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		args_help_exit(&a, 1);
 		if (args_flag(&a, "-q"))
 			o->quiet = 1;
+		else if (args_flag(&a, "-big"))
+			budget_allow_big();
 		else if (args_flag(&a, "-name"))
 			o->name_only = 1;
 		else if (args_str(&a, "-o", &o->output))
@@ -131,6 +137,16 @@ int main(int argc, char **argv)
 		fprintf(stderr, "splat: %s: %d rects, lambda %g um, NA %g, %dx%d grid\n",
 			o.input, m->nrects, in->wavelength, in->na, in->nx, in->ny);
 
+	double est_n, est_pairs, est_s, est_b;
+	splat_estimate(in, &est_n, &est_pairs, &est_s, &est_b);
+	char what[96];
+	snprintf(what, sizeof what, "%.3g diffraction orders, %.3g TCC pairs and %.3g image points",
+		 est_n, est_pairs, (double)in->nx * in->ny);
+	budget_check(o.input, what, est_s, est_b);
+	/* the image and the cutlines are committed together (util.h) */
+	aout_defer();
+	splat_quiet = o.quiet;
+
 	int norders;
 	struct spectrum *sp = splat_spectrum(in, 0, 0, &norders);
 	if (!sp)
@@ -168,6 +184,7 @@ int main(int argc, char **argv)
 		if (!o.quiet)
 			fprintf(stderr, "splat: wrote cutline %s\n", in->cutlines[k].file);
 	}
+	aout_finish();
 	fmt_contour_free(c);
 	spectrum_free(sp);
 	fmt_splat_free(in);

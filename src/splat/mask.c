@@ -13,7 +13,10 @@
  * so no sampling of the mask (and no aliasing) enters the image.
  */
 #include "splat.h"
+#include "checked.h"
 #include "util.h"
+
+#include <limits.h>
 
 #include <math.h>
 #include <stdlib.h>
@@ -91,8 +94,10 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	/* the 1e-9 keeps an order lying exactly on fmax (a coherent grating
 	 * order on the pupil edge) from depending on rounding */
 	double fm = fmax * (1 + 1e-9);
-	o->mmax = (int)floor(fm * o->lx);
-	o->nmax = (int)floor(fm * o->ly);
+	/* checked: a huge window or source must not wrap the order counts
+	 * (the image indexes 4 mmax + 1 columns in an int) */
+	o->mmax = ck_int(floor(fm * o->lx), 0, (INT_MAX - 1) / 4, "diffraction orders along x");
+	o->nmax = ck_int(floor(fm * o->ly), 0, (INT_MAX - 1) / 4, "diffraction orders along y");
 	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
 
 	/* the cells and their transmissions */

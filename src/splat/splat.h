@@ -124,11 +124,19 @@ struct spectrum spectrum_plane(const struct spectrum *sp, int k);
 struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      const struct source *s, const struct quad *q);
 void spectrum_free(struct spectrum *sp);
+/* 0: tcc_spectrum prints a progress line on long runs (progress.h);
+ * splat's main sets it from -q, the tests leave it 1. */
+extern int splat_quiet;
 
 /* The whole computation for an input, with quadrature orders (0: the
  * defaults); used by main and the tests. */
 struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ninner,
 				int *norders);
+
+/* The work of a run estimated from its input (estimate.c): orders and
+ * pairs of orders, seconds and bytes. */
+void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
+		    double *seconds, double *bytes);
 
 /* Intensity at one point, and on the contour grid (z[j*nx + i]). */
 double image_at(const struct spectrum *sp, double x, double y);

@@ -17,6 +17,7 @@
  * and a clear mask gives exactly 1 at every depth.
  */
 #include "splat.h"
+#include "progress.h"
 #include "util.h"
 
 #include <math.h>
@@ -56,6 +57,8 @@ static void tcc(const struct pupil *p, const struct source *s,
 	}
 }
 
+int splat_quiet = 1;
+
 /* Below this the source sends no light through the pupil (an annulus or
  * poles entirely outside NA): relative to the area of the pupil. */
 static const double NORM_MIN = 1e-12;
@@ -92,7 +95,12 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 	sp->nmax = o->nmax;
 	sp->nplanes = np;
 	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
+	struct progress prog;
+	progress_begin(&prog, "TCC pairs", splat_quiet);
 	for (int i = 0; i < o->n; i++) {
+		/* pairs (i, j >= i) done so far, of n (n + 1) / 2 */
+		progress_step(&prog, (double)i * (2.0 * o->n - i + 1) / 2,
+			      (double)o->n * (o->n + 1) / 2);
 		if (o->c[i] == 0)
 			continue;
 		for (int j = i; j < o->n; j++) {

@@ -28,7 +28,7 @@ done
 splat -q -defocus 0.5 -o a.cont other.in
 splat -q -o b.cont other.in
 cmp -s a.cont b.cont && fail "-defocus 0.5 gave the file's defocus 0.2 image"
-for v in x nan inf -2000 "" 0.1.2; do
+for v in x nan inf -2000 500 "" 0.1.2; do
 	rm -f bad.cont
 	expect_error splat -q -defocus "$v" -o bad.cont base.in
 	splat -q -defocus "$v" -o bad.cont base.in 2>/dev/null; st=$?

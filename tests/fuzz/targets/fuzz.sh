@@ -1,0 +1,90 @@
+#!/bin/sh
+# tests/fuzz/targets/fuzz.sh - the libFuzzer harness of every file reader (issue 14).
+#
+#   sh tests/fuzz/targets/fuzz.sh build DIR          build DIR/fuzz_READER for each reader
+#   sh tests/fuzz/targets/fuzz.sh run DIR SECONDS    build, then fuzz each reader SECONDS
+#   sh tests/fuzz/targets/fuzz.sh once DIR           build, then run each target over its
+#                                            seeds and the regress files once
+#
+# `make fuzz [FUZZ_SECONDS=60]` is "run build-fuzz $(FUZZ_SECONDS)".
+# The targets are tests/fuzz/targets/fuzz_reader.c compiled once per
+# reader with clang's -fsanitize=fuzzer,address,undefined and linked with
+# the library built the same way (in DIR/obj).  Seeds: tests/fuzz/corpus/
+# READER/; the corpus a run grows: DIR/corpus/READER/; what it finds (a
+# crash, a sanitizer report, a hang over 10 s, more than 1 GB):
+# DIR/findings/READER-*.  Every finding, once fixed, goes to
+# tests/fuzz/regress/ with a line in its EXPECT (see HACKING.md).
+set -u
+mode=${1:?usage: fuzz.sh build|run|once DIR [SECONDS]}
+dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
+secs=${3:-60}
+top=$(cd "$(dirname "$0")/../../.." && pwd)
+CLANG=${FUZZ_CC:-clang}
+READERS="splat bleach contour plot2d plot3d options template rate_ascii rate_binary"
+FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11 -I$top/src/lib"
+
+command -v "$CLANG" >/dev/null 2>&1 || { echo "fuzz: $CLANG is not installed (apt-get install clang libclang-rt-14-dev)" >&2; exit 77; }
+mkdir -p "$dir/obj" "$dir/corpus" "$dir/findings" || exit 1
+
+# the library, minus the X11 preview, with coverage for the fuzzer
+objs=""
+for src in "$top"/src/lib/*.c; do
+	case $src in */draw_x11.c) continue ;; esac
+	objs="$objs $dir/obj/$(basename "$src" .c).o"
+done
+for src in "$top"/src/lib/*.c; do
+	case $src in */draw_x11.c) continue ;; esac
+	o=$dir/obj/$(basename "$src" .c).o
+	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$top/src/lib" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
+		echo "$CLANG -fsanitize=fuzzer-no-link $FLAGS -c -o $o $src"
+	fi
+done | xargs -P 2 -I{} sh -c '{}' || { echo "fuzz: building the library failed" >&2; exit 1; }
+for r in $READERS; do
+	t=$dir/fuzz_$r
+	if [ ! -x "$t" ] || [ "$top/tests/fuzz/targets/fuzz_reader.c" -nt "$t" ] ||
+	   [ -n "$(find "$dir/obj" -name '*.o' -newer "$t")" ]; then
+		$CLANG -fsanitize=fuzzer $FLAGS -DREADER_NAME="\"$r\"" -o "$t" \
+			-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free \
+			"$top/tests/fuzz/targets/fuzz_reader.c" $objs -lm || { echo "fuzz: linking $r failed" >&2; exit 1; }
+	fi
+done
+[ "$mode" = build ] && exit 0
+
+# libFuzzer options: die() messages closed (crash reports still shown),
+# leaks off (a rejected input leaves what the reader allocated), a hang
+# is 10 s, memory 1 GB
+OPTS="-close_fd_mask=2 -detect_leaks=0 -timeout=10 -rss_limit_mb=1024 -print_final_stats=1"
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+status=0
+for r in $READERS; do
+	mkdir -p "$dir/corpus/$r"
+	seeds=$top/tests/fuzz/corpus/$r
+	log=$dir/$r.log
+	case $mode in
+	once)
+		# the seeds, and the regress files of this reader, once each
+		reg=$dir/regress-$r
+		rm -rf "$reg" && mkdir -p "$reg"
+		prefix=$(echo "$r" | sed 's/_.*//')
+		for f in "$top"/tests/fuzz/regress/"$prefix"-*; do
+			[ -f "$f" ] && cp "$f" "$reg/"
+		done
+		"$dir/fuzz_$r" $OPTS -runs=0 -artifact_prefix="$dir/findings/$r-" \
+			"$seeds" "$reg" >"$log" 2>&1
+		;;
+	run)
+		"$dir/fuzz_$r" $OPTS -max_total_time="$secs" \
+			-artifact_prefix="$dir/findings/$r-" "$dir/corpus/$r" "$seeds" >"$log" 2>&1
+		;;
+	*) echo "fuzz: unknown mode $mode" >&2; exit 2 ;;
+	esac
+	st=$?
+	execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+	echo "fuzz: $r: ${execs:-?} executions, exit $st"
+	if [ $st -ne 0 ]; then
+		status=1
+		grep -E 'ERROR|SUMMARY|Test unit written|runtime error' "$log" | head -n 8 | sed 's/^/    /'
+	fi
+done
+exit $status
