@@ -378,7 +378,9 @@ int main(int argc, char **argv)
 	parse_options(argc, argv, &o);
 	char *n2, *nc;
 	output_names(&o, &n2, &nc);
-	struct ratefile *r = fmt_rate_read(o.input);
+	/* the rate only: bleach's other arrays (M) are not read into memory */
+	static const char *const rate_only[] = {NULL};
+	struct ratefile *r = fmt_rate_read_arrays(o.input, rate_only);
 	struct rfield f;
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);
