@@ -10,6 +10,7 @@
 #include "fmt_plot.h"
 #include "fmt_rate.h"
 #include "num.h"
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
@@ -23,7 +24,7 @@ static const char usage[] =
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
-	"            [-o curves.plot] [-check] [-q] rate-file\n"
+	"            [-o curves.plot] [-check] [-q] [-threads n] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -50,7 +51,8 @@ static const char usage[] =
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -check           check the mesh's consistency after every step\n"
-	"  -q               no progress or summary on stderr\n";
+	"  -q               no progress or summary on stderr\n"
+	"  -threads n       threads to use (default $SAMPLE3D_THREADS, else every core)\n";
 
 static int parse3(struct args *a, const char *opt, double v[3])
 {
@@ -112,6 +114,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->refine[0] = o->refine[1] = o->refine[2] = 1;
 	o->out3d = "curves.plot";
 	const char *method = "ray", *cutaxis = NULL;
+	long threads = 0;
 	args_usage(&a, usage, NULL, NULL);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
@@ -124,6 +127,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		    args_num(&a, "-smin", 0, 1e6, &o->smin) ||
 		    args_num(&a, "-rl", 0, 2, &o->rl) ||
 		    args_int(&a, "-clip", 1, 1000000000, &o->clip_every) ||
+		    args_int(&a, "-threads", 1, PAR_MAX_THREADS, &threads) ||
 		    args_str(&a, "-o", &o->out3d) ||
 		    args_str(&a, "-method", &method))
 			;
@@ -204,6 +208,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			args_error(&a, "-cut takes x or y, not %.40s", cutaxis);
 	}
 	args_done(&a, NULL);
+	par_set_threads((int)threads);
 }
 
 /* out3d.2D, and out3d with .plot replaced by .cut */
