@@ -54,12 +54,21 @@ static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 		for (int jj = 0; jj + 1 < n[1]; jj++)
 			for (int i = 0; i + 1 < n[0]; i++) {
 				const double *v = f->v + k * sz + jj * sy + i;
+				/* the squared slopes along the cell's 12 edges,
+				 * each shared by the two corners it joins */
+				double ex[2][2], ey[2][2], ez[2][2];
+				for (size_t a = 0; a < 2; a++)
+					for (size_t b = 0; b < 2; b++) {
+						double gx = (v[sx + a * sy + b * sz] - v[a * sy + b * sz]) / f->h[0];
+						double gy = (v[a + sy + b * sz] - v[a + b * sz]) / f->h[1];
+						double gz = (v[a + b * sy + sz] - v[a + b * sy]) / f->h[2];
+						ex[a][b] = gx * gx;     /* at oy = a, oz = b */
+						ey[a][b] = gy * gy;     /* at ox = a, oz = b */
+						ez[a][b] = gz * gz;     /* at ox = a, oy = b */
+					}
 				for (int c = 0; c < 8; c++) {
 					size_t ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
-					double gx = (v[sx + oy * sy + oz * sz] - v[oy * sy + oz * sz]) / f->h[0];
-					double gy = (v[ox + sy + oz * sz] - v[ox + oz * sz]) / f->h[1];
-					double gz = (v[ox + oy * sy + sz] - v[ox + oy * sy]) / f->h[2];
-					double g2 = gx * gx + gy * gy + gz * gz;
+					double g2 = ex[oy][oz] + ey[ox][oz] + ez[ox][oy];
 					if (g2 > w->gmax2)
 						w->gmax2 = g2;
 				}

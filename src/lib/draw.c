@@ -199,7 +199,15 @@ void draw_coord_text(char *buf, size_t size, double v)
 	char *p = buf;
 	if (n < 0)
 		*p++ = '-';
-	p += sprintf(p, "%lld", q / 100);
+	char dig[24];
+	int nd = 0;
+	long long ip = q / 100;
+	do {
+		dig[nd++] = (char)('0' + ip % 10);
+		ip /= 10;
+	} while (ip);
+	while (nd)
+		*p++ = dig[--nd];
 	int c = (int)(q % 100);
 	if (c) {
 		*p++ = '.';
