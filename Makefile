@@ -25,7 +25,7 @@ ifdef WERROR
 WARN    += -Werror
 endif
 CPPFLAGS += -D_XOPEN_SOURCE=700 -Isrc/lib
-LDLIBS   = -lm
+LDLIBS   = -lm -lpthread
 PREFIX  ?= /usr/local
 
 # X11 preview: detected by compiling a tiny program; NO_X11=1 turns it off.

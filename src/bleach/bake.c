@@ -17,6 +17,7 @@
  * the interpolation over dose, so it costs one table, not every column.
  */
 #include "bleach.h"
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
@@ -159,57 +160,92 @@ static double *taps(int p, double d, double sigma, int *hw)
 	return c;
 }
 
+/* The x pass of bake_xy on rows [lo, hi) of nx points (period px),
+ * with per-worker scratch: each row depends only on itself. */
+struct xpass {
+	double *f;
+	int nx, px, h;
+	const double *c;
+	double *scratch;                /* per worker: px + 2h, then px */
+};
+
+static void bake_x_rows(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct xpass *x = ctx;
+	int px = x->px, h = x->h;
+	double *ext = x->scratch + (size_t)worker * (2 * (size_t)px + 2 * (size_t)h);
+	double *w = ext + (size_t)px + 2 * (size_t)h;
+	/* the row wrapped h samples on either side, so that the taps run over
+	 * contiguous memory */
+	for (size_t r = lo; r < hi; r++) {
+		double *row = x->f + r * (size_t)x->nx;
+		for (int i = -h; i < px + h; i++)
+			ext[i + h] = row[((i % px) + px) % px];
+		memset(w, 0, (size_t)px * sizeof *w);
+		for (int o = 0; o <= 2 * h; o++) {
+			const double *e = ext + o;
+			double co = x->c[o];
+			for (int i = 0; i < px; i++)
+				w[i] += co * e[i];
+		}
+		memcpy(row, w, (size_t)px * sizeof *w);
+		row[px] = row[0];
+	}
+}
+
+/* The y pass on planes [lo, hi): whole rows at once, so the inner loop
+ * runs along x, contiguous. */
+struct ypass {
+	double *f;
+	int nx, py, h;
+	const double *c;
+	double *scratch;                /* per worker: py * nx */
+};
+
+static void bake_y_planes(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct ypass *y = ctx;
+	int nx = y->nx, py = y->py, h = y->h;
+	size_t plane = (size_t)nx * (size_t)(py + 1);
+	double *w = y->scratch + (size_t)worker * (size_t)py * (size_t)nx;
+	for (size_t k = lo; k < hi; k++) {
+		double *p = y->f + k * plane;
+		memset(w, 0, (size_t)py * nx * sizeof *w);
+		for (int j = 0; j < py; j++) {
+			double *o = w + (size_t)j * nx;
+			for (int q = 0; q <= 2 * h; q++) {
+				int l = ((j + q - h) % py + py) % py;
+				const double *in = p + (size_t)l * nx;
+				double s = y->c[q];
+				for (int i = 0; i < nx; i++)
+					o[i] += s * in[i];
+			}
+		}
+		memcpy(p, w, (size_t)py * nx * sizeof *w);
+		memcpy(p + (size_t)py * nx, p, (size_t)nx * sizeof *p);
+	}
+}
+
 void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sigma)
 {
-	size_t plane = (size_t)nx * (size_t)ny;
 	int px = nx - 1, py = ny - 1;
+	size_t nw = (size_t)par_threads();
 	if (px >= 2) {
 		int h;
 		double *c = taps(px, dx, sigma, &h);
-		/* the row wrapped h samples on either side, so that the taps
-		 * run over contiguous memory */
-		double *ext = xcalloc((size_t)px + 2 * (size_t)h, sizeof *ext);
-		double *w = xcalloc((size_t)px, sizeof *w);
-		for (size_t r = 0; r < (size_t)nz * ny; r++) {
-			double *row = f + r * (size_t)nx;
-			for (int i = -h; i < px + h; i++)
-				ext[i + h] = row[((i % px) + px) % px];
-			memset(w, 0, (size_t)px * sizeof *w);
-			for (int o = 0; o <= 2 * h; o++) {
-				const double *e = ext + o;
-				double co = c[o];
-				for (int i = 0; i < px; i++)
-					w[i] += co * e[i];
-			}
-			memcpy(row, w, (size_t)px * sizeof *w);
-			row[px] = row[0];
-		}
-		free(w);
-		free(ext);
+		struct xpass x = {f, nx, px, h, c,
+				  xcalloc(nw * (2 * (size_t)px + 2 * (size_t)h), sizeof(double))};
+		par_for((size_t)nz * ny, 16, bake_x_rows, &x);
+		free(x.scratch);
 		free(c);
 	}
 	if (py >= 2) {
-		/* whole rows at once: the inner loop runs along x, contiguous */
 		int h;
 		double *c = taps(py, dy, sigma, &h);
-		double *w = xreallocarray(NULL, (size_t)py * nx, sizeof *w);
-		for (int k = 0; k < nz; k++) {
-			double *p = f + (size_t)k * plane;
-			memset(w, 0, (size_t)py * nx * sizeof *w);
-			for (int j = 0; j < py; j++) {
-				double *o = w + (size_t)j * nx;
-				for (int q = 0; q <= 2 * h; q++) {
-					int l = ((j + q - h) % py + py) % py;
-					const double *in = p + (size_t)l * nx;
-					double s = c[q];
-					for (int i = 0; i < nx; i++)
-						o[i] += s * in[i];
-				}
-			}
-			memcpy(p, w, (size_t)py * nx * sizeof *w);
-			memcpy(p + (size_t)py * nx, p, (size_t)nx * sizeof *p);
-		}
-		free(w);
+		struct ypass y = {f, nx, py, h, c,
+				  xreallocarray(NULL, nw * (size_t)py, (size_t)nx * sizeof(double))};
+		par_for((size_t)nz, 1, bake_y_planes, &y);
+		free(y.scratch);
 		free(c);
 	}
 }

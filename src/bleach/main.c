@@ -20,6 +20,7 @@
 #include "fmt_rate.h"
 #include "fmt_stack.h"
 #include "num.h"
+#include "par.h"
 #include "util.h"
 
 #include <stdarg.h>
@@ -29,7 +30,7 @@
 
 static const char usage[] =
 	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-big]\n"
-	"              contour-file bleach-inputfile\n"
+	"              [-threads n] contour-file bleach-inputfile\n"
 	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
 	"  -solid         also write mxyz.solid.3D, the surface M = level, for pdraw\n"
 	"  -m level       M of that surface (default 0.8)\n"
@@ -37,7 +38,8 @@ static const char usage[] =
 	"  -q             no progress lines on stderr\n"
 	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n"
 	"  -big           run work estimated beyond the limits (an hour, the\n"
-	"                 machine's memory; also SAMPLE3D_BIG=1)\n";
+	"                 machine's memory; also SAMPLE3D_BIG=1)\n"
+	"  -threads n     threads to use (default $SAMPLE3D_THREADS, else every core)\n";
 
 /* Largest -dose, mJ/cm2: bleach(5)'s bound on the dose statement. */
 static const double DOSE_MAX = 1e6;
@@ -52,6 +54,7 @@ static const double T_POINT = 3e-7, T_OUT = 1e-6, B_POINT = 32;
 
 struct options {
 	int ascii, solid, quiet;
+	long threads;
 	double level;
 	const char *output;
 	const char *dose;       /* -dose value, checked after parsing */
@@ -76,6 +79,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->quiet = 1;
 		else if (args_flag(&a, "-big"))
 			budget_allow_big();
+		else if (args_int(&a, "-threads", 1, PAR_MAX_THREADS, &o->threads))
+			;
 		else if (args_num(&a, "-m", 0, 1, &o->level))
 			;
 		else if (args_str(&a, "-o", &o->output))
@@ -137,12 +142,64 @@ static double aerial_at(const struct contour *c, double x, double y)
 	       (1 - s) * t * z[c->nx] + s * t * z[c->nx + 1];
 }
 
+/* Columns per thread at least: below this the pool costs more than it
+ * saves (a column is nz Hermite evaluations). */
+#define PAR_MIN_COLUMNS 64
+
+/* M of every column from the dose table, columns split among threads
+ * (each column depends only on its own dose). */
+struct columns {
+	const struct dose_table *t;
+	const double *dose;
+	double *M;
+	size_t ncol;
+	int nz;
+	double *col;                    /* nz scratch values per worker */
+};
+
+static void fill_columns(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct columns *c = ctx;
+	int nz = c->nz;
+	double *col = c->col + (size_t)worker * (size_t)nz;
+	for (size_t q = lo; q < hi; q++) {
+		dose_table_eval(c->t, c->dose[q], col);
+		/* node j is at depth j dz; the rate file's k = 0 is the bottom */
+		for (int k = 0; k < nz; k++)
+			c->M[(size_t)k * c->ncol + q] = col[nz - 1 - k];
+	}
+}
+
+/* The development rate of every point, planes split among threads. */
+struct rates {
+	const struct devrate *dv;
+	const double *M;
+	double *R;
+	size_t ncol;
+	double thick, dz;
+};
+
+static void fill_rates(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct rates *r = ctx;
+	for (size_t k = lo; k < hi; k++) {
+		double depth = r->thick - (double)k * r->dz;
+		if (depth < 0)
+			depth = 0;
+		const double *mk = r->M + k * r->ncol;
+		double *rk = r->R + k * r->ncol;
+		for (size_t q = 0; q < r->ncol; q++)
+			rk[q] = devrate(r->dv, mk[q], depth);
+	}
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog(argv[0]);
 	struct options o;
 	parse_options(argc, argv, &o);
 	quiet = o.quiet;
+	par_set_threads((int)o.threads);
 
 	/* -dose D: the range of bleach(5)'s dose statement; a bad value is a
 	 * one-line usage error (sweep scripts read it in a log) */
@@ -229,15 +286,14 @@ int main(int argc, char **argv)
 		bake_rows2(t->M, t->dM, t->nd + 1, nz, dz, in.diffusion);
 	}
 
-	double *col = xreallocarray(NULL, (size_t)nz, sizeof *col);
-	if (st->is_stack)
+	if (st->is_stack) {
 		stack_expose(st, &in, e, t, I, ncol, nz, M);
-	else
-	for (size_t q = 0; q < ncol; q++) {
-		dose_table_eval(t, dose[q], col);
-		/* node j is at depth j dz; the rate file's k = 0 is the bottom */
-		for (int k = 0; k < nz; k++)
-			M[(size_t)k * ncol + q] = col[nz - 1 - k];
+	} else {
+		struct columns cj = {t, dose, M, ncol, nz,
+				     xreallocarray(NULL, (size_t)par_threads() * (size_t)nz,
+						   sizeof(double))};
+		par_for(ncol, PAR_MIN_COLUMNS, fill_columns, &cj);
+		free(cj.col);
 	}
 	if (in.bake == BAKE_3D && in.diffusion > 0)
 		bake_xy(M, nx, ny, nz, (c->xmax - c->xmin) / (nx - 1),
@@ -249,14 +305,8 @@ int main(int argc, char **argv)
 	struct devrate dv;
 	devrate_init(&dv, &in);
 	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
-	for (int k = 0; k < nz; k++) {
-		double depth = in.thick - k * dz;
-		if (depth < 0)
-			depth = 0;
-		double *mk = M + (size_t)k * ncol, *rk = R + (size_t)k * ncol;
-		for (size_t q = 0; q < ncol; q++)
-			rk[q] = devrate(&dv, mk[q], depth);
-	}
+	struct rates rj = {&dv, M, R, ncol, in.thick, dz};
+	par_for((size_t)nz, 1, fill_rates, &rj);
 	progress("development rate: %s model", mname[in.model]);
 
 	const char *out = o.output ? o.output : o.ascii ? "rval.3D" : "rval.3D.binary";
@@ -268,7 +318,6 @@ int main(int argc, char **argv)
 	}
 
 	aout_finish();
-	free(col);
 	free(dose);
 	dose_table_free(t);
 	exposure_free(e);

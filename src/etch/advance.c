@@ -20,8 +20,11 @@
  * the ray turns by more than the recursive length, |s2 - s1| > l (7.4.2).
  */
 #include "etch.h"
+#include "par.h"
+#include "util.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Deepest recursion of the vector check: 2^-30 of a step.  The ray turns
@@ -35,11 +38,17 @@
  * divides by R1; the limit form s2 = s1 - grad R dt is used instead. */
 #define RATE_TINY 1e-300
 
+/* What one advance needs; st is the worker's own counters (summed after
+ * the parallel loop, so the totals do not depend on the split). */
 struct ctx {
 	const struct rfield *f;
 	const struct etch_opts *o;
 	struct etch_stats *st;
 };
+
+/* Nodes per thread at least: a node's advance is a few microseconds, a
+ * par_for some. */
+#define PAR_MIN_NODES 256
 
 static void normalize(double s[3])
 {
@@ -173,15 +182,26 @@ static void advance_both(struct ctx *c, struct node *n, double dt, int depth)
 	memcpy(n->s, s2, sizeof s2);
 }
 
-void advance_mesh(struct mesh *m, const struct rfield *f, double dt,
-		  const struct etch_opts *o, struct etch_stats *st)
+/* The advance of nodes [lo, hi): each node moves by its own ray alone,
+ * so nodes may be split among threads freely. */
+struct job {
+	struct mesh *m;
+	const struct rfield *f;
+	const struct etch_opts *o;
+	double dt;
+	struct etch_stats *st;          /* one per worker */
+};
+
+static void advance_range(void *arg, size_t lo, size_t hi, int worker)
 {
-	struct ctx c = {f, o, st};
-	for (size_t i = 0; i < m->nnode; i++) {
-		struct node *n = &m->node[i];
+	struct job *j = arg;
+	const struct rfield *f = j->f;
+	struct ctx c = {f, j->o, &j->st[worker]};
+	for (size_t i = lo; i < hi; i++) {
+		struct node *n = &j->m->node[i];
 		if (!n->alive)
 			continue;
-		advance_both(&c, n, dt, 0);
+		advance_both(&c, n, j->dt, 0);
 		/* a node that has left a face is no longer on it: moving out
 		 * of the box (then clipping makes a new border, 7.5.2.1) or
 		 * down from the top */
@@ -191,4 +211,19 @@ void advance_mesh(struct mesh *m, const struct rfield *f, double dt,
 		if (n->flags & ON_Y1 && n->p[1] != f->hi[1]) n->flags &= ~(unsigned)ON_Y1;
 		if (n->flags & ON_TOP && n->p[2] != f->hi[2]) n->flags &= ~(unsigned)ON_TOP;
 	}
+}
+
+void advance_mesh(struct mesh *m, const struct rfield *f, double dt,
+		  const struct etch_opts *o, struct etch_stats *st)
+{
+	int nw = par_threads();
+	struct etch_stats *ws = xcalloc((size_t)nw, sizeof *ws);
+	struct job j = {m, f, o, dt, ws};
+	par_for(m->nnode, PAR_MIN_NODES, advance_range, &j);
+	for (int w = 0; w < nw; w++) {
+		st->substeps += ws[w].substeps;
+		st->halvings += ws[w].halvings;
+		st->stopped += ws[w].stopped;
+	}
+	free(ws);
 }

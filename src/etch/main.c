@@ -12,6 +12,7 @@
 #include "fmt_rate.h"
 #include "fmt_vtk.h"
 #include "num.h"
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
@@ -26,7 +27,7 @@ static const char usage[] =
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
 	"            [-refine n|nx ny nz|auto]\n"
 	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
-	"            rate-file\n"
+	"            [-threads n] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -59,7 +60,8 @@ static const char usage[] =
 	"  -n               check the command line only: read and write nothing\n"
 	"  -q               no progress or summary on stderr\n"
 	"  -big             run work estimated beyond the limits (an hour, the\n"
-	"                   machine's memory; also SAMPLE3D_BIG=1)\n";
+	"                   machine's memory; also SAMPLE3D_BIG=1)\n"
+	"  -threads n       threads to use (default $SAMPLE3D_THREADS, else every core)\n";
 
 static int parse3(struct args *a, const char *opt, double v[3])
 {
@@ -121,6 +123,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->refine[0] = o->refine[1] = o->refine[2] = 1;
 	o->out3d = "curves.plot";
 	const char *method = "ray", *cutaxis = NULL;
+	long threads = 0;
 	args_usage(&a, usage, NULL, NULL);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
@@ -133,6 +136,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		    args_num(&a, "-smin", 0, 1e6, &o->smin) ||
 		    args_num(&a, "-rl", 0, 2, &o->rl) ||
 		    args_int(&a, "-clip", 1, 1000000000, &o->clip_every) ||
+		    args_int(&a, "-threads", 1, PAR_MAX_THREADS, &threads) ||
 		    args_str(&a, "-o", &o->out3d) ||
 		    args_str(&a, "-vtk", &o->outvtk) ||
 		    args_str(&a, "-method", &method))
@@ -224,6 +228,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			args_error(&a, "-cut takes x or y, not %.40s", cutaxis);
 	}
 	args_done(&a, NULL);
+	par_set_threads((int)threads);
 }
 
 /* out3d.2D, and out3d with .plot replaced by .cut */
@@ -437,7 +442,9 @@ int main(int argc, char **argv)
 		return 0;       /* -n: the options are good (sample3D asks first) */
 	char *n2, *nc;
 	output_names(&o, &n2, &nc);
-	struct ratefile *r = fmt_rate_read(o.input);
+	/* the rate only: bleach's other arrays (M) are not read into memory */
+	static const char *const rate_only[] = {NULL};
+	struct ratefile *r = fmt_rate_read_arrays(o.input, rate_only);
 	struct rfield f;
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);

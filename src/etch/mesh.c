@@ -509,6 +509,10 @@ void mesh_kill_triangle(struct mesh *m, int t)
 
 void mesh_compact(struct mesh *m)
 {
+	/* nothing died since the last compaction (most steps of a smooth
+	 * advance): renumbering would be the identity, so skip the rewrite */
+	if (m->live_node == m->nnode && m->live_seg == m->nseg && m->live_tri == m->ntri)
+		return;
 	int *nmap = xreallocarray(NULL, m->nnode + 1, sizeof *nmap);
 	int *smap = xreallocarray(NULL, m->nseg + 1, sizeof *smap);
 	int *tmap = xreallocarray(NULL, m->ntri + 1, sizeof *tmap);

@@ -110,7 +110,8 @@ int mesh_weld(struct mesh *m, int keep, int del);
  * without a segment are deleted too. */
 void mesh_kill_triangle(struct mesh *m, int t);
 
-/* Drops dead objects and renumbers the rest in order. */
+/* Drops dead objects and renumbers the rest in order (at once when
+ * nothing is dead). */
 void mesh_compact(struct mesh *m);
 
 /* Length of segment s. */

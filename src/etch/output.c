@@ -60,32 +60,51 @@ struct etch_out *out_open(const struct etch_opts *o, const struct rfield *f)
 	return w;
 }
 
+/* Triangle i of the live ones as a closed 4-point curve, in 3D or
+ * projected on z = 0 (called from several threads: reads only). */
+struct tri_list {
+	const struct mesh *m;
+	const int *tri;                 /* the live triangles, in order */
+};
+
+static void tri_curve3(void *ctx, size_t i, double *p)
+{
+	const struct tri_list *l = ctx;
+	const struct triangle *t = &l->m->tri[l->tri[i]];
+	for (int j = 0; j < 4; j++)
+		memcpy(p + 3 * j, l->m->node[t->n[j % 3]].p, 3 * sizeof *p);
+}
+
+static void tri_curve2(void *ctx, size_t i, double *p)
+{
+	const struct tri_list *l = ctx;
+	const struct triangle *t = &l->m->tri[l->tri[i]];
+	for (int j = 0; j < 4; j++) {
+		const double *q = l->m->node[t->n[j % 3]].p;
+		p[2 * j] = q[0];
+		p[2 * j + 1] = q[1];
+	}
+}
+
 void out_write(struct etch_out *w, const struct mesh *m)
 {
-	if (w->w3) {
-		fmt_plot_begin_set(w->w3, w->b3, (long)m->live_tri);
-		for (size_t t = 0; t < m->ntri; t++) {
-			if (!m->tri[t].alive)
-				continue;
-			double p[12];
-			for (int j = 0; j < 4; j++)
-				memcpy(p + 3 * j, m->node[m->tri[t].n[j % 3]].p, 3 * sizeof *p);
-			fmt_plot_curve(w->w3, 4, p);
+	if (w->w3 || w->w2) {
+		int *tri = xreallocarray(NULL, m->ntri + 1, sizeof *tri);
+		size_t n = 0;
+		for (size_t t = 0; t < m->ntri; t++)
+			if (m->tri[t].alive)
+				tri[n++] = (int)t;
+		struct tri_list l = {m, tri};
+		/* the text of large sets is formatted on several threads */
+		if (w->w3) {
+			fmt_plot_begin_set(w->w3, w->b3, (long)n);
+			fmt_plot_curves(w->w3, n, 4, tri_curve3, &l);
 		}
-	}
-	if (w->w2) {
-		fmt_plot_begin_set(w->w2, w->b2, (long)m->live_tri);
-		for (size_t t = 0; t < m->ntri; t++) {
-			if (!m->tri[t].alive)
-				continue;
-			double p[8];
-			for (int j = 0; j < 4; j++) {
-				const double *q = m->node[m->tri[t].n[j % 3]].p;
-				p[2 * j] = q[0];
-				p[2 * j + 1] = q[1];
-			}
-			fmt_plot_curve(w->w2, 4, p);
+		if (w->w2) {
+			fmt_plot_begin_set(w->w2, w->b2, (long)n);
+			fmt_plot_curves(w->w2, n, 4, tri_curve2, &l);
 		}
+		free(tri);
 	}
 	if (w->cut)
 		out_cut(m, w->axis, w->value, w->cut, w->bc);

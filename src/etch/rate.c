@@ -9,9 +9,71 @@
  */
 #include "rate.h"
 
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/* What one worker of rfield_init finds in its planes. */
+struct scan {
+	size_t bad;                     /* first negative or NaN rate, or SIZE_MAX */
+	double rmax, gmax2;
+};
+
+struct scan_job {
+	const struct rfield *f;
+	struct scan *w;
+};
+
+/* Rates of planes [lo, hi) of points, and |grad R|^2 of the cells
+ * between plane k and k + 1 for k in [lo, hi). */
+static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
+{
+	const struct scan_job *j = ctx;
+	const struct rfield *f = j->f;
+	struct scan *w = &j->w[worker];
+	const int *n = f->n;
+	size_t sx = 1, sy = (size_t)n[0], sz = (size_t)n[0] * n[1];
+	for (size_t i = lo * sz; i < hi * sz; i++) {
+		if (!(f->v[i] >= 0)) {
+			if (i < w->bad)
+				w->bad = i;
+		} else if (f->v[i] > w->rmax) {
+			w->rmax = f->v[i];
+		}
+	}
+	if (w->bad != SIZE_MAX)
+		return;
+	/* |grad R| of a trilinear cell is largest at one of its corners
+	 * (|grad R|^2 is convex along each axis), where each component is
+	 * the difference along one cell edge: so this is max |grad R|
+	 * exactly, as thesis 7.4.1 wants it. */
+	for (size_t k = lo; k < hi && k + 1 < (size_t)n[2]; k++)
+		for (int jj = 0; jj + 1 < n[1]; jj++)
+			for (int i = 0; i + 1 < n[0]; i++) {
+				const double *v = f->v + k * sz + jj * sy + i;
+				/* the squared slopes along the cell's 12 edges,
+				 * each shared by the two corners it joins */
+				double ex[2][2], ey[2][2], ez[2][2];
+				for (size_t a = 0; a < 2; a++)
+					for (size_t b = 0; b < 2; b++) {
+						double gx = (v[sx + a * sy + b * sz] - v[a * sy + b * sz]) / f->h[0];
+						double gy = (v[a + sy + b * sz] - v[a + b * sz]) / f->h[1];
+						double gz = (v[a + b * sy + sz] - v[a + b * sy]) / f->h[2];
+						ex[a][b] = gx * gx;     /* at oy = a, oz = b */
+						ey[a][b] = gy * gy;     /* at ox = a, oz = b */
+						ez[a][b] = gz * gz;     /* at ox = a, oy = b */
+					}
+				for (int c = 0; c < 8; c++) {
+					size_t ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
+					double g2 = ex[oy][oz] + ey[ox][oz] + ez[ox][oy];
+					if (g2 > w->gmax2)
+						w->gmax2 = g2;
+				}
+			}
+}
 
 void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 {
@@ -29,34 +91,28 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 		f->h[d] = (hi[d] - lo[d]) / (n[d] - 1);
 	}
 	f->v = fmt_rate_values(r);
-	size_t total = (size_t)n[0] * n[1] * n[2];
-	f->rmax = 0;
-	for (size_t i = 0; i < total; i++) {
-		if (!(f->v[i] >= 0))
-			die("%s:1: negative or invalid rate at point %zu", name, i);
-		if (f->v[i] > f->rmax)
-			f->rmax = f->v[i];
-	}
-	/* |grad R| of a trilinear cell is largest at one of its corners
-	 * (|grad R|^2 is convex along each axis), where each component is
-	 * the difference along one cell edge: so this is max |grad R|
-	 * exactly, as thesis 7.4.1 wants it. */
+	/* planes of cells split among threads; max is independent of the
+	 * split, and the first bad point is the smallest index any finds */
+	int nw = par_threads();
+	struct scan *w = xcalloc((size_t)nw, sizeof *w);
+	for (int i = 0; i < nw; i++)
+		w[i].bad = SIZE_MAX;
+	struct scan_job j = {f, w};
+	par_for((size_t)n[2], 1, scan_planes, &j);
+	size_t bad = SIZE_MAX;
 	double gmax2 = 0;
-	size_t sx = 1, sy = (size_t)n[0], sz = (size_t)n[0] * n[1];
-	for (int k = 0; k + 1 < n[2]; k++)
-		for (int j = 0; j + 1 < n[1]; j++)
-			for (int i = 0; i + 1 < n[0]; i++) {
-				const double *v = f->v + k * sz + j * sy + i;
-				for (int c = 0; c < 8; c++) {
-					size_t ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
-					double gx = (v[sx + oy * sy + oz * sz] - v[oy * sy + oz * sz]) / f->h[0];
-					double gy = (v[ox + sy + oz * sz] - v[ox + oz * sz]) / f->h[1];
-					double gz = (v[ox + oy * sy + sz] - v[ox + oy * sy]) / f->h[2];
-					double g2 = gx * gx + gy * gy + gz * gz;
-					if (g2 > gmax2)
-						gmax2 = g2;
-				}
-			}
+	f->rmax = 0;
+	for (int i = 0; i < nw; i++) {
+		if (w[i].bad < bad)
+			bad = w[i].bad;
+		if (w[i].rmax > f->rmax)
+			f->rmax = w[i].rmax;
+		if (w[i].gmax2 > gmax2)
+			gmax2 = w[i].gmax2;
+	}
+	free(w);
+	if (bad != SIZE_MAX)
+		die("%s:1: negative or invalid rate at point %zu", name, bad);
 	f->gmax = sqrt(gmax2);
 }
 

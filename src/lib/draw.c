@@ -164,13 +164,15 @@ void draw_marker(struct draw *d, int type, double x, double y, double size)
 	}
 }
 
-void draw_print_coord(FILE *f, double v)
+/* The definition of draw_print_coord's text (printf "%.2f" of the value
+ * rounded to 0.01, trailing zeros and point dropped, "-0" folded), used
+ * for values too large for the integer form below. */
+static void coord_ref(char *buf, size_t size, double v)
 {
-	char buf[40];
 	double r = round(v * 100) / 100;
 	if (fabs(r) < 0.005)
 		r = 0;
-	snprintf(buf, sizeof buf, "%.2f", r);
+	snprintf(buf, size, "%.2f", r);
 	char *dot = strchr(buf, '.');
 	if (dot) {
 		char *e = buf + strlen(buf) - 1;
@@ -179,6 +181,47 @@ void draw_print_coord(FILE *f, double v)
 		if (e == dot)
 			*e = '\0';
 	}
+}
+
+/* Below this many hundredths the value rounded to 0.01 prints, under
+ * "%.2f", as exactly the integer round(v * 100) over 100: the double
+ * nearest N / 100 is far closer to it than the 0.005 to a rounding edge. */
+#define COORD_INT_MAX 1e15
+
+void draw_coord_text(char *buf, size_t size, double v)
+{
+	double n = round(v * 100);
+	if (!(fabs(n) < COORD_INT_MAX) || size < 24) {
+		coord_ref(buf, size, v);
+		return;
+	}
+	long long q = (long long)fabs(n);
+	char *p = buf;
+	if (n < 0)
+		*p++ = '-';
+	char dig[24];
+	int nd = 0;
+	long long ip = q / 100;
+	do {
+		dig[nd++] = (char)('0' + ip % 10);
+		ip /= 10;
+	} while (ip);
+	while (nd)
+		*p++ = dig[--nd];
+	int c = (int)(q % 100);
+	if (c) {
+		*p++ = '.';
+		*p++ = (char)('0' + c / 10);
+		if (c % 10)
+			*p++ = (char)('0' + c % 10);
+	}
+	*p = '\0';
+}
+
+void draw_print_coord(FILE *f, double v)
+{
+	char buf[40];
+	draw_coord_text(buf, sizeof buf, v);
 	fputs(buf, f);
 }
 

@@ -3,6 +3,7 @@
 #include "checked.h"
 #include "lex.h"
 #include "num.h"
+#include "par.h"
 #include "util.h"
 
 #include <stdlib.h>
@@ -116,6 +117,63 @@ void fmt_plot_curve(struct plot_writer *w, int npts, const double *p)
 	for (int i = 0; i < npts; i++)
 		num_print_row(f, p + (size_t)i * (size_t)w->dim, w->dim);
 	w->written++;
+}
+
+/* Curves per batch of fmt_plot_curves: bounds the text held in memory
+ * (about 16 MB for triangles in 3D) while giving every thread plenty. */
+#define CURVES_BATCH 65536
+/* Curves per thread at least: formatting one is about a microsecond. */
+#define CURVES_MIN_CHUNK 512
+
+struct curves_job {
+	size_t first;                   /* index of the batch's first curve */
+	int npts, dim;
+	void (*get)(void *, size_t, double *);
+	void *ctx;
+	struct { char *s; size_t len, cap; } *text;     /* per range, in order */
+};
+
+static void format_curves(void *arg, size_t lo, size_t hi, int range)
+{
+	struct curves_job *j = arg;
+	int nv = j->npts * j->dim;
+	double *p = xreallocarray(NULL, (size_t)nv, sizeof *p);
+	size_t most = 16 + (size_t)nv * (NUM_BUFSZ + 1);   /* text of one curve */
+	char **s = &j->text[range].s;
+	size_t *len = &j->text[range].len, *cap = &j->text[range].cap;
+	*len = 0;
+	for (size_t i = lo; i < hi; i++) {
+		j->get(j->ctx, j->first + i, p);
+		xgrow(s, cap, *len + most, 1);
+		*len += (size_t)sprintf(*s + *len, "%d\n", j->npts);
+		for (int v = 0; v < nv; v++) {
+			num_fmt(*s + *len, p[v]);
+			*len += strlen(*s + *len);
+			(*s)[(*len)++] = (v + 1) % j->dim ? ' ' : '\n';
+		}
+	}
+	free(p);
+}
+
+void fmt_plot_curves(struct plot_writer *w, size_t n, int npts,
+		     void (*get)(void *ctx, size_t i, double *p), void *ctx)
+{
+	int nt = par_threads();
+	struct curves_job j = {0, npts, w->dim, get, ctx,
+			       xcalloc((size_t)nt, sizeof *j.text)};
+	for (size_t b = 0; b < n; b += CURVES_BATCH) {
+		size_t m = n - b < CURVES_BATCH ? n - b : CURVES_BATCH;
+		for (int t = 0; t < nt; t++)
+			j.text[t].len = 0;
+		j.first = b;
+		par_for(m, CURVES_MIN_CHUNK, format_curves, &j);
+		for (int t = 0; t < nt; t++)
+			fwrite(j.text[t].s ? j.text[t].s : "", 1, j.text[t].len, w->a->f);
+	}
+	for (int t = 0; t < nt; t++)
+		free(j.text[t].s);
+	free(j.text);
+	w->written += (long)n;
 }
 
 void fmt_plot_close(struct plot_writer *w)

@@ -57,6 +57,12 @@ struct plot_writer *fmt_plot_open(const char *path, int dim);
 /* Starts a set: its bounds and how many curves will follow. */
 void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurves);
 void fmt_plot_curve(struct plot_writer *w, int npts, const double *p);
+/* n curves of npts points each, the same bytes as n fmt_plot_curve calls;
+ * get(ctx, i, p) fills the npts * dim coordinates of curve i.  Formatting
+ * runs on the thread pool (par.h), so get must be safe to call from
+ * several threads at once; the text is written in order. */
+void fmt_plot_curves(struct plot_writer *w, size_t n, int npts,
+		     void (*get)(void *ctx, size_t i, double *p), void *ctx);
 /* Checks the counts promised, commits the file (atomic rename). */
 void fmt_plot_close(struct plot_writer *w);
 

@@ -24,31 +24,55 @@
 #include "util.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 _Static_assert(sizeof(double) == 8, "binary64 doubles required");
 
 static const char *bound_names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
 
+/* CRC-32 by slicing (Intel's slicing-by-8): table[0] is the bytewise
+ * table, table[k][n] the CRC of byte n followed by k zero bytes, so eight
+ * bytes are folded in per step with eight independent lookups instead of
+ * eight dependent ones.  The same value as the bytewise loop, which the
+ * tail still uses; tests/formats/crc32.c compares the two. */
+static uint32_t crc_table[8][256];
+static pthread_once_t crc_once = PTHREAD_ONCE_INIT;
+
+static void crc_init(void)
+{
+	for (uint32_t n = 0; n < 256; n++) {
+		uint32_t c = n;
+		for (int k = 0; k < 8; k++)
+			c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+		crc_table[0][n] = c;
+	}
+	for (int k = 1; k < 8; k++)
+		for (int n = 0; n < 256; n++) {
+			uint32_t c = crc_table[k - 1][n];
+			crc_table[k][n] = (c >> 8) ^ crc_table[0][c & 0xFF];
+		}
+}
+
 unsigned long fmt_crc32(unsigned long crc, const void *data, size_t len)
 {
-	static uint32_t table[256];
-	static int ready;
-	if (!ready) {
-		for (uint32_t n = 0; n < 256; n++) {
-			uint32_t c = n;
-			for (int k = 0; k < 8; k++)
-				c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-			table[n] = c;
-		}
-		ready = 1;
-	}
+	pthread_once(&crc_once, crc_init);
+	const uint32_t (*t)[256] = crc_table;
 	const unsigned char *p = data;
 	uint32_t c = (uint32_t)crc ^ 0xFFFFFFFFu;
-	for (size_t i = 0; i < len; i++)
-		c = table[(c ^ p[i]) & 0xFF] ^ (c >> 8);
+	for (; len >= 8; len -= 8, p += 8) {
+		uint32_t a = c ^ ((uint32_t)p[0] | (uint32_t)p[1] << 8 |
+				  (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24);
+		uint32_t b = (uint32_t)p[4] | (uint32_t)p[5] << 8 |
+			     (uint32_t)p[6] << 16 | (uint32_t)p[7] << 24;
+		c = t[7][a & 0xFF] ^ t[6][a >> 8 & 0xFF] ^ t[5][a >> 16 & 0xFF] ^ t[4][a >> 24] ^
+		    t[3][b & 0xFF] ^ t[2][b >> 8 & 0xFF] ^ t[1][b >> 16 & 0xFF] ^ t[0][b >> 24];
+	}
+	for (; len; len--, p++)
+		c = t[0][(c ^ *p) & 0xFF] ^ (c >> 8);
 	return c ^ 0xFFFFFFFFu;
 }
 
@@ -158,11 +182,38 @@ static void put_f64(unsigned char *p, double d)
 
 enum { HDR_FIXED = 8 + 4 + 4 + 12 + 48 };
 
-static struct ratefile *read_binary(const char *name, const unsigned char *buf, size_t len)
+/* Whether array name nm is wanted: all are when want is NULL, the rate
+ * (array 0) always. */
+static int wanted(const char *const *want, uint32_t a, const char *nm)
+{
+	if (!want || a == 0)
+		return 1;
+	for (; *want; want++)
+		if (strcmp(*want, nm) == 0)
+			return 1;
+	return 0;
+}
+
+static void read_exact(const char *name, FILE *f, void *p, size_t n)
+{
+	if (fread(p, 1, n, f) != n)
+		die("%s:1: cannot read the binary rate file%s", name, ferror(f) ? ":" : " (shortened while reading)");
+}
+
+/* The binary form from f, positioned anywhere, len bytes long.  Streams
+ * the arrays through a small buffer, so memory is the wanted arrays and
+ * no copy of the file; unwanted arrays are read (the CRC covers them) but
+ * not kept. */
+static struct ratefile *read_binary(const char *name, FILE *f, size_t len,
+				    const char *const *want)
 {
 	/* binary files have no lines; report offset 1 as ":0" would confuse */
 	if (len < HDR_FIXED + 4)
 		die("%s:1: truncated binary rate file (%zu bytes)", name, len);
+	unsigned char buf[HDR_FIXED + 8 * RATE_MAX_ARRAYS];
+	if (fseek(f, 0, SEEK_SET) != 0)
+		die("%s: cannot seek:", name);
+	read_exact(name, f, buf, HDR_FIXED);
 	uint32_t version = get_u32(buf + 8);
 	if (version != RATE_VERSION)
 		die("%s:1: binary rate file version %lu, this program reads version %d",
@@ -187,52 +238,71 @@ static struct ratefile *read_binary(const char *name, const unsigned char *buf, 
 	if (len != need)
 		die("%s:1: binary rate file is %zu bytes, its header says %llu "
 		    "(truncated or corrupt)", name, len, (unsigned long long)need);
-	uint32_t crc = get_u32(buf + len - 4);
-	if (fmt_crc32(0, buf, len - 4) != crc)
-		die("%s:1: checksum mismatch: the binary rate file is corrupt", name);
+	read_exact(name, f, buf + HDR_FIXED, 8 * (size_t)na);
+	unsigned long crc = fmt_crc32(0, buf, HDR_FIXED + 8 * (size_t)na);
 
 	struct ratefile *r = xcalloc(1, sizeof *r);
 	r->nx = (int)n[0], r->ny = (int)n[1], r->nz = (int)n[2];
 	double b[6];
-	for (int k = 0; k < 6; k++) {
+	for (int k = 0; k < 6; k++)
 		b[k] = get_f64(buf + 28 + 8 * k);
-		if (!isfinite(b[k])) {
-			free(r);
-			die("%s:1: %s is not a finite number", name, bound_names[k]);
+	r->xmin = b[0], r->xmax = b[1], r->ymin = b[2], r->ymax = b[3], r->zmin = b[4], r->zmax = b[5];
+	char names[RATE_MAX_ARRAYS][RATE_NAME_LEN + 1];
+	for (uint32_t a = 0; a < na; a++) {
+		memcpy(names[a], buf + HDR_FIXED + 8 * a, 8);
+		names[a][8] = '\0';
+	}
+	/* the values, a chunk at a time; the first problem found is reported
+	 * only once the CRC is known good, so a corrupt file says so */
+	size_t np = (size_t)pts;
+	unsigned char chunk[64 * 1024];
+	size_t bad_at = 0;
+	uint32_t bad_array = 0;
+	for (uint32_t a = 0; a < na; a++) {
+		double *v = NULL;
+		if (wanted(want, a, names[a]) && r->narrays < RATE_MAX_ARRAYS) {
+			v = xreallocarray(NULL, np, sizeof *v);
+			struct rate_array *ra = &r->arrays[r->narrays++];
+			memcpy(ra->name, names[a], sizeof ra->name);
+			ra->v = v;
+		}
+		for (size_t i = 0; i < np;) {
+			size_t m = np - i < sizeof chunk / 8 ? np - i : sizeof chunk / 8;
+			read_exact(name, f, chunk, 8 * m);
+			crc = fmt_crc32(crc, chunk, 8 * m);
+			for (size_t j = 0; j < m; j++, i++) {
+				double x = get_f64(chunk + 8 * j);
+				if (!isfinite(x) && !bad_at)
+					bad_at = i + 1, bad_array = a;
+				if (v)
+					v[i] = x;
+			}
 		}
 	}
-	r->xmin = b[0], r->xmax = b[1], r->ymin = b[2], r->ymax = b[3], r->zmin = b[4], r->zmax = b[5];
+	unsigned char tail[4];
+	read_exact(name, f, tail, 4);
+	if (crc != get_u32(tail)) {
+		fmt_rate_free(r);
+		die("%s:1: checksum mismatch: the binary rate file is corrupt", name);
+	}
+	for (int k = 0; k < 6; k++)
+		if (!isfinite(b[k])) {
+			fmt_rate_free(r);
+			die("%s:1: %s is not a finite number", name, bound_names[k]);
+		}
 	const char *err = check_header(r);
 	if (err) {
-		free(r);
+		fmt_rate_free(r);
 		die("%s:1: %s", name, err);
 	}
-	const unsigned char *p = buf + HDR_FIXED;
-	for (uint32_t a = 0; a < na; a++, p += 8) {
-		char nm[RATE_NAME_LEN + 1];
-		memcpy(nm, p, 8);
-		nm[8] = '\0';
-		if (!valid_name(nm)) {
+	for (uint32_t a = 0; a < na; a++)
+		if (!valid_name(names[a])) {
 			fmt_rate_free(r);
 			die("%s:1: bad array name in binary rate file", name);
 		}
-		memcpy(r->arrays[a].name, nm, sizeof nm);
-		r->arrays[a].v = NULL;
-		r->narrays = (int)a + 1;
-	}
-	size_t np = (size_t)pts;
-	for (uint32_t a = 0; a < na; a++) {
-		double *v = xreallocarray(NULL, np, sizeof *v);
-		r->arrays[a].v = v;
-		for (size_t i = 0; i < np; i++, p += 8) {
-			v[i] = get_f64(p);
-			if (!isfinite(v[i])) {
-				char an[RATE_NAME_LEN + 1];
-				memcpy(an, r->arrays[a].name, sizeof an);
-				fmt_rate_free(r);
-				die("%s:1: value %zu of array %s is not finite", name, i + 1, an);
-			}
-		}
+	if (bad_at) {
+		fmt_rate_free(r);
+		die("%s:1: value %zu of array %s is not finite", name, bad_at, names[bad_array]);
 	}
 	return r;
 }
@@ -315,18 +385,58 @@ static struct ratefile *read_ascii(struct lex *lx)
 
 struct ratefile *fmt_rate_read(const char *path)
 {
-	size_t len;
-	unsigned char *buf = lex_slurp(path, &len);
+	return fmt_rate_read_arrays(path, NULL);
+}
+
+static int is_compressed(const char *path)
+{
+	size_t n = strlen(path);
+	return (n > 3 && strcmp(path + n - 3, ".gz") == 0) ||
+	       (n > 2 && strcmp(path + n - 2, ".Z") == 0);
+}
+
+struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want)
+{
 	const char *name = strcmp(path, "-") == 0 ? "stdin" : path;
 	struct ratefile *r;
+	/* a plain binary file is streamed from disk: no copy of it in memory */
+	if (strcmp(path, "-") != 0 && !is_compressed(path)) {
+		FILE *f = fopen(path, "rb");
+		if (!f)
+			die("%s: cannot open:", path);
+		struct stat st;
+		unsigned char magic[8];
+		if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) &&
+		    fread(magic, 1, 8, f) == 8 && memcmp(magic, RATE_MAGIC_BIN, 8) == 0) {
+			r = read_binary(name, f, (size_t)st.st_size, want);
+			fclose(f);
+			return r;
+		}
+		fclose(f);
+	}
+	size_t len;
+	unsigned char *buf = lex_slurp(path, &len);
 	if (len >= 8 && memcmp(buf, RATE_MAGIC_BIN, 8) == 0) {
-		r = read_binary(name, buf, len);
+		FILE *f = fmemopen(buf, len, "rb");
+		if (!f)
+			die("%s: cannot read:", name);
+		r = read_binary(name, f, len, want);
+		fclose(f);
 		free(buf);
 	} else {
 		struct lex *lx = lex_from_memory(name, buf, len);
 		free(buf);
 		r = read_ascii(lx);
 		lex_close(lx);
+		/* keep only what was asked for */
+		int kept = 0;
+		for (int a = 0; a < r->narrays; a++) {
+			if (wanted(want, (uint32_t)a, r->arrays[a].name))
+				r->arrays[kept++] = r->arrays[a];
+			else
+				free(r->arrays[a].v);
+		}
+		r->narrays = kept;
 	}
 	return r;
 }
