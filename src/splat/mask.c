@@ -115,6 +115,18 @@ static double moment_sin(double w, double H)
 	return s;
 }
 
+/* The layer that the next shapes of transmission tau go to: painting
+ * twice with the same tau is a union, so consecutive statements with the
+ * same tau share one layer (and the result does not depend on how the
+ * shapes were split into statements). */
+static int layer_for(int *k, double complex *t, double complex tau)
+{
+	if (*k > 0 && t[*k - 1] == tau)
+		return *k - 1;
+	t[*k] = tau;
+	return (*k)++;
+}
+
 /* The painted mask as layers in paint order: rects (clamped to the window
  * as above) and the splat layers, interleaved by file order. */
 static int paint_layers(const struct splat_mask *m, struct poly_set **out,
@@ -125,12 +137,12 @@ static int paint_layers(const struct splat_mask *m, struct poly_set **out,
 	double complex *t = xreallocarray(NULL, (size_t)nl, sizeof *t);
 	int k = 0, j = 0;
 	for (int i = 0; i <= m->nrects; i++) {
-		for (; j < m->nlayers && m->layers[j].after == i; j++, k++) {
+		for (; j < m->nlayers && m->layers[j].after == i; j++) {
 			const struct splat_layer *l = &m->layers[j];
+			int to = layer_for(&k, t, phasor(l->t, l->phase));
 			for (int p = 0; p < l->shapes.n; p++)
-				poly_set_add(&ls[k], poly_set_xy(&l->shapes, p),
+				poly_set_add(&ls[to], poly_set_xy(&l->shapes, p),
 					     poly_set_nv(&l->shapes, p));
-			t[k] = phasor(l->t, l->phase);
 		}
 		if (i == m->nrects)
 			break;
@@ -138,12 +150,13 @@ static int paint_layers(const struct splat_mask *m, struct poly_set **out,
 		double x1 = clampd(r->x1, m->xmin, m->xmax), x2 = clampd(r->x2, m->xmin, m->xmax);
 		double y1 = clampd(r->y1, m->ymin, m->ymax), y2 = clampd(r->y2, m->ymin, m->ymax);
 		double q[8] = {x1, y1, x2, y1, x2, y2, x1, y2};
-		poly_set_add(&ls[k], q, 4);
-		t[k++] = phasor(r->t, r->phase);
+		poly_set_add(&ls[layer_for(&k, t, phasor(r->t, r->phase))], q, 4);
 	}
+	for (int i = k; i < nl; i++)
+		poly_set_free(&ls[i]);
 	*out = ls;
 	*tau = t;
-	return nl;
+	return k;
 }
 
 /* cc[(n + nmax) * nm + m + mmax] += the transform of the painted layers,
