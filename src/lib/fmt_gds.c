@@ -655,6 +655,10 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 				px[i] = si32(p + 8 * i);
 				py[i] = si32(p + 8 * i + 4);
 			}
+			/* an array is refused whole before its first copy */
+			if ((double)e->cols * e->rows > (double)(FMT_GDS_MAX_VISIT - f->visits))
+				gds_die(g, e->off, "an AREF of %d x %d copies takes flattening past "
+					"%d elements; refusing", e->cols, e->rows, FMT_GDS_MAX_VISIT);
 			for (int j = 0; j < e->rows; j++)
 				for (int i = 0; i < e->cols; i++) {
 					double x = px[0], y = py[0];
