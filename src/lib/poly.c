@@ -206,11 +206,16 @@ int poly_circle_sides(double r, double tol)
 static void add_circle(struct poly_set *out, double cx, double cy, double r, double tol)
 {
 	int n = poly_circle_sides(r, tol);
+	/* vertices slightly outside the circle so that the polygon has the
+	 * circle's area: the error changes sign along the edge instead of
+	 * always cutting area (vertices r(s-1) ~ sagitta/3 out, edge middles
+	 * ~ 2 sagitta/3 in, both within tol) */
+	double s = sqrt(2 * M_PI / (n * sin(2 * M_PI / n)));
 	double *c = xreallocarray(NULL, (size_t)n, 2 * sizeof *c);
 	for (int i = 0; i < n; i++) {
 		double a = 2 * M_PI * i / n;
-		c[2 * i] = cx + r * cos(a);
-		c[2 * i + 1] = cy + r * sin(a);
+		c[2 * i] = cx + r * s * cos(a);
+		c[2 * i + 1] = cy + r * s * sin(a);
 	}
 	poly_set_add(out, c, n);
 	free(c);

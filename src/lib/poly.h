@@ -62,8 +62,8 @@ int poly_winding(const double *xy, int n, double x, double y);
  * hw and one mitre wedge per bend (a 90-degree bend gets a square outer
  * corner), the start extended by ext0 and the end by ext1 along the path
  * (negative shortens).  round_tol > 0 adds round caps (circles of radius
- * hw at both ends, inscribed polygons whose sagitta is at most
- * round_tol).  Repeated points are skipped. */
+ * hw at both ends: regular polygons of the circle's area whose outline
+ * stays within round_tol of it).  Repeated points are skipped. */
 void poly_path(struct poly_set *out, const double *xy, int n, double hw,
 	       double ext0, double ext1, double round_tol);
 

@@ -5,7 +5,7 @@
 # and the SRAM-like clip of examples/layout.  Our flattening (the gds
 # statement) against gdspy's own (get_polygons, as polygon statements):
 # images agree to 1e-9, round path ends (gdspy's tolerance 1e-5 um, ours
-# 1 nm, measured 1.1e-5) to 1e-4.  Skips when no python3 with gdspy is installed.
+# 1 nm; gdspy also snaps to its 1 nm grid; measured 8e-5) to 2e-4.  Skips when no python3 with gdspy is installed.
 . "$TOP/tests/lib/common.sh"
 PY=
 for p in python3 /usr/bin/python3; do
@@ -25,7 +25,7 @@ for c in refs paths round sram; do
 	win='window -3 3 -3 3'
 	[ $c = sram ] && win='window 0 7.2 0 3.2'
 	tol=1e-9
-	[ $c = round ] && tol=1e-4
+	[ $c = round ] && tol=2e-4
 	printf '%s\n' "$optics" "$win" "gds $c.gds layer 1/0" >g_$c.in
 	printf '%s\n' "$optics" "$win" "clip on" >p_$c.in
 	cat $c.in >>p_$c.in
