@@ -88,7 +88,7 @@ static void trans_phase(struct lex *lx, const char *kw, const char *ts, const ch
 
 /* Most vertices in one polygon statement: the simplicity check is
  * quadratic, and a hand-written polygon is short. */
-enum { SPLAT_MAX_POLY = 100000 };
+enum { SPLAT_MAX_POLY = 10000 };
 
 static struct splat_layer *new_layer(struct splat_input *in, size_t *cap, struct lex *lx)
 {
