@@ -20,6 +20,7 @@
 #include "util.h"
 
 #include <math.h>
+#include <setjmp.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -71,6 +72,12 @@ struct cell {
 
 struct gds_lib {
 	char *path, *ctx;
+	jmp_buf *jmp;           /* where errors go in the _try functions, else die */
+	char err[640];
+	long max_visit;
+	double *tmp;            /* flattening scratch, kept here to be freed on error */
+	size_t tcap;
+	struct poly_set path_out;
 	unsigned char *buf;
 	size_t len;
 	double um;              /* micrometres per dbu */
@@ -83,16 +90,21 @@ struct gds_lib {
 
 static _Noreturn void gds_die(const struct gds_lib *g, size_t off, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
-static _Noreturn void gds_die(const struct gds_lib *g, size_t off, const char *fmt, ...)
+static _Noreturn void gds_die(const struct gds_lib *cg, size_t off, const char *fmt, ...)
 {
+	struct gds_lib *g = (struct gds_lib *)cg;
 	char msg[512];
 	va_list ap;
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof msg, fmt, ap);
 	va_end(ap);
 	if (g->ctx)
-		die("%s: %s: byte %zu: %s", g->ctx, g->path, off, msg);
-	die("%s: byte %zu: %s", g->path, off, msg);
+		snprintf(g->err, sizeof g->err, "%s: %s: byte %zu: %s", g->ctx, g->path, off, msg);
+	else
+		snprintf(g->err, sizeof g->err, "%s: byte %zu: %s", g->path, off, msg);
+	if (g->jmp)
+		longjmp(*g->jmp, 1);
+	die("%s", g->err);
 }
 
 static unsigned be16(const unsigned char *p) { return (unsigned)p[0] << 8 | p[1]; }
@@ -313,11 +325,20 @@ static int find_cell(const struct gds_lib *g, const char *name, size_t len)
 	return -1;
 }
 
-struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
+static struct gds_lib *gds_new(const char *path, const char *ctx)
 {
 	struct gds_lib *g = xcalloc(1, sizeof *g);
 	g->path = xstrdup(path);
 	g->ctx = ctx ? xstrdup(ctx) : NULL;
+	g->max_visit = FMT_GDS_MAX_VISIT;
+	return g;
+}
+
+static void parse(struct gds_lib *g);
+
+struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
+{
+	struct gds_lib *g = gds_new(path, ctx);
 	if (ctx) {
 		/* name the statement that asked, not only the file */
 		FILE *t = fopen(path, "rb");
@@ -326,6 +347,37 @@ struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 		fclose(t);
 	}
 	g->buf = lex_slurp(path, &g->len);
+	parse(g);
+	return g;
+}
+
+struct gds_lib *fmt_gds_read_mem(const char *name, const void *data, size_t len,
+				 char *err, size_t errlen)
+{
+	struct gds_lib *volatile g = gds_new(name, NULL);
+	g->buf = xmalloc(len + 1);
+	if (len)
+		memcpy(g->buf, data, len);
+	g->len = len;
+	jmp_buf jb;
+	g->jmp = &jb;
+	if (setjmp(jb)) {
+		snprintf(err, errlen, "%s", g->err);
+		fmt_gds_free(g);
+		return NULL;
+	}
+	parse(g);
+	g->jmp = NULL;
+	return g;
+}
+
+void fmt_gds_set_max_visit(struct gds_lib *g, long n)
+{
+	g->max_visit = n;
+}
+
+static void parse(struct gds_lib *g)
+{
 	size_t pos = 0, ecap = 0, ccap = 0;
 	struct rec r;
 	next_rec(g, &pos, &r);
@@ -398,7 +450,8 @@ struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 	if (!have_units)
 		gds_die(g, 0, "no UNITS record");
 	/* resolve references by name */
-	qsort(g->c, (size_t)g->nc, sizeof *g->c, cmp_cell);
+	if (g->nc > 1)
+		qsort(g->c, (size_t)g->nc, sizeof *g->c, cmp_cell);
 	for (int i = 0; i + 1 < g->nc; i++)
 		if (strcmp(g->c[i].name, g->c[i + 1].name) == 0)
 			gds_die(g, g->c[i + 1].off > g->c[i].off ? g->c[i + 1].off : g->c[i].off,
@@ -414,7 +467,6 @@ struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 				(const char *)g->buf + e->sname);
 		g->c[e->ref].referenced = 1;
 	}
-	return g;
 }
 
 void fmt_gds_free(struct gds_lib *g)
@@ -428,6 +480,8 @@ void fmt_gds_free(struct gds_lib *g)
 	free(g->buf);
 	free(g->path);
 	free(g->ctx);
+	free(g->tmp);
+	poly_set_free(&g->path_out);
 	free(g);
 }
 
@@ -491,9 +545,6 @@ struct flat {
 	struct poly_set *out;
 	long shapes;
 	long visits;
-	double *tmp;
-	size_t tcap;
-	struct poly_set path;   /* scratch for path outlines */
 };
 
 static double to_um(const struct gds_lib *g, double v)
@@ -525,13 +576,15 @@ static void out_poly(struct flat *f, double *xy, int n)
 
 static void shape(struct flat *f, const struct elem *e, const struct xform *t)
 {
-	const unsigned char *p = f->g->buf + e->xy;
-	xgrow(&f->tmp, &f->tcap, 2 * (size_t)e->nxy + 2, sizeof *f->tmp);
+	struct gds_lib *g = (struct gds_lib *)f->g;
+	const unsigned char *p = g->buf + e->xy;
+	xgrow(&g->tmp, &g->tcap, 2 * (size_t)e->nxy + 2, sizeof *g->tmp);
+	double *tmp = g->tmp;
 	for (int i = 0; i < e->nxy; i++)
-		apply(t, si32(p + 8 * i), si32(p + 8 * i + 4), &f->tmp[2 * i], &f->tmp[2 * i + 1]);
+		apply(t, si32(p + 8 * i), si32(p + 8 * i + 4), &tmp[2 * i], &tmp[2 * i + 1]);
 	f->shapes++;
 	if (e->kind != R_PATH) {
-		out_poly(f, f->tmp, e->nxy);
+		out_poly(f, tmp, e->nxy);
 		return;
 	}
 	/* a negative width is absolute: not scaled by the magnification */
@@ -544,16 +597,17 @@ static void shape(struct flat *f, const struct elem *e, const struct xform *t)
 		e1 = e->endextn * t->mag;
 	} else if (e->pathtype == 1)
 		rt = 1e-3 / f->g->um;   /* 1 nm in dbu */
-	f->path.n = 0;
-	if (f->path.start)
-		f->path.start[0] = 0;
-	poly_path(&f->path, f->tmp, e->nxy, hw, e0, e1, rt);
-	for (int i = 0; i < f->path.n; i++) {
-		int nv = poly_set_nv(&f->path, i);
+	struct poly_set *ps = &g->path_out;
+	ps->n = 0;
+	if (ps->start)
+		ps->start[0] = 0;
+	poly_path(ps, tmp, e->nxy, hw, e0, e1, rt);
+	for (int i = 0; i < ps->n; i++) {
+		int nv = poly_set_nv(ps, i);
 		double q[2 * 4096];
 		if (nv > 4096)
 			continue;
-		memcpy(q, poly_set_xy(&f->path, i), 2 * (size_t)nv * sizeof *q);
+		memcpy(q, poly_set_xy(ps, i), 2 * (size_t)nv * sizeof *q);
 		out_poly(f, q, nv);
 	}
 }
@@ -645,9 +699,9 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 	}
 	for (size_t k = c->first; k < c->first + c->n; k++) {
 		const struct elem *e = &g->e[k];
-		if (++f->visits > FMT_GDS_MAX_VISIT)
-			gds_die(g, e->off, "flattening visits more than %d elements (arrays of "
-				"arrays?); refusing", FMT_GDS_MAX_VISIT);
+		if (++f->visits > g->max_visit)
+			gds_die(g, e->off, "flattening visits more than %ld elements (arrays of "
+				"arrays?); refusing", g->max_visit);
 		if (e->kind == R_SREF || e->kind == R_AREF) {
 			const unsigned char *p = g->buf + e->xy;
 			double px[3], py[3];
@@ -656,19 +710,19 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 				py[i] = si32(p + 8 * i + 4);
 			}
 			/* an array is refused whole before its first copy */
-			if ((double)e->cols * e->rows > (double)(FMT_GDS_MAX_VISIT - f->visits))
+			if ((double)e->cols * e->rows > (double)(g->max_visit - f->visits))
 				gds_die(g, e->off, "an AREF of %d x %d copies takes flattening past "
-					"%d elements; refusing", e->cols, e->rows, FMT_GDS_MAX_VISIT);
+					"%ld elements; refusing", e->cols, e->rows, g->max_visit);
 			for (int j = 0; j < e->rows; j++)
 				for (int i = 0; i < e->cols; i++) {
 					double x = px[0], y = py[0];
 					if (e->kind == R_AREF) {
 						x += (px[1] - px[0]) * i / e->cols + (px[2] - px[0]) * j / e->rows;
 						y += (py[1] - py[0]) * i / e->cols + (py[2] - py[0]) * j / e->rows;
-						if ((i || j) && ++f->visits > FMT_GDS_MAX_VISIT)
-							gds_die(g, e->off, "flattening visits more than %d "
+						if ((i || j) && ++f->visits > g->max_visit)
+							gds_die(g, e->off, "flattening visits more than %ld "
 								"elements (arrays of arrays?); refusing",
-								FMT_GDS_MAX_VISIT);
+								g->max_visit);
 					}
 					struct xform ct = compose(t, e, x, y);
 					flatten(f, e->ref, &ct);
@@ -681,10 +735,42 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 	}
 }
 
+static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
+		   const double *win, struct poly_set *out);
+
 long fmt_gds_shapes(const struct gds_lib *cg, const char *cell, int layer, int datatype,
 		    const double *win, struct poly_set *out)
 {
-	struct gds_lib *g = (struct gds_lib *)cg;  /* bounding boxes are cached */
+	char err[640];
+	long n = fmt_gds_shapes_try((struct gds_lib *)cg, cell, layer, datatype, win, out,
+				    err, sizeof err);
+	if (n < 0)
+		die("%s", err);
+	return n;
+}
+
+long fmt_gds_shapes_try(struct gds_lib *g, const char *cell, int layer, int datatype,
+			const double *win, struct poly_set *out, char *err, size_t errlen)
+{
+	jmp_buf jb;
+	g->jmp = &jb;
+	if (setjmp(jb)) {
+		g->jmp = NULL;
+		snprintf(err, errlen, "%s", g->err);
+		/* a walk cut short leaves cells marked as on the path */
+		for (int i = 0; i < g->nc; i++)
+			if (g->c[i].state == 1)
+				g->c[i].state = 0;
+		return -1;
+	}
+	long n = shapes(g, cell, layer, datatype, win, out);
+	g->jmp = NULL;
+	return n;
+}
+
+static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
+		   const double *win, struct poly_set *out)
+{
 	int top = -1;
 	if (cell) {
 		top = find_cell(g, cell, strlen(cell));
@@ -726,7 +812,5 @@ long fmt_gds_shapes(const struct gds_lib *cg, const char *cell, int layer, int d
 	}
 	struct xform id = {1, 0, 0, 1, 0, 0, 1, 0, 0};
 	flatten(&f, top, &id);
-	free(f.tmp);
-	poly_set_free(&f.path);
 	return f.shapes;
 }

@@ -45,4 +45,13 @@ enum { FMT_GDS_MAX_VISIT = 50000000 };
 long fmt_gds_shapes(const struct gds_lib *g, const char *cell, int layer, int datatype,
 		    const double *win, struct poly_set *out);
 
+/* The same without exiting, for fuzzing and for callers that recover:
+ * NULL (or -1) with the one-line message in err; nothing leaks. */
+struct gds_lib *fmt_gds_read_mem(const char *name, const void *data, size_t len,
+				 char *err, size_t errlen);
+long fmt_gds_shapes_try(struct gds_lib *g, const char *cell, int layer, int datatype,
+			const double *win, struct poly_set *out, char *err, size_t errlen);
+/* Lowers the flattening limit (FMT_GDS_MAX_VISIT by default). */
+void fmt_gds_set_max_visit(struct gds_lib *g, long n);
+
 #endif
