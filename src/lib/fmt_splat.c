@@ -211,7 +211,7 @@ static void gds_statement(struct lex *lx, struct splat_input *in, size_t *cap,
 /* Loads the gds layers (window auto needs them all first), sets an auto
  * window, then clips every layer to the window or checks that it lies
  * inside. */
-static void finish_layers(struct lex *lx, struct splat_input *in, long clip_line)
+static void finish_layers(struct lex *lx, struct splat_input *in)
 {
 	struct splat_mask *m = &in->mask;
 	double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
@@ -277,7 +277,6 @@ static void finish_layers(struct lex *lx, struct splat_input *in, long clip_line
 		poly_set_free(&l->shapes);
 		l->shapes = c;
 	}
-	(void)clip_line;
 }
 
 struct splat_input *fmt_splat_read(const char *path)
@@ -285,7 +284,6 @@ struct splat_input *fmt_splat_read(const char *path)
 	struct lex *lx = lex_open(path);
 	struct splat_input *in = xcalloc(1, sizeof *in);
 	size_t acap = 0, rcap = 0, ccap = 0, lcap = 0;
-	long clip_line = 0;
 	int have_window = 0;
 	long window_line = 0;
 	in->wavelength = 0.436;
@@ -416,7 +414,6 @@ struct splat_input *fmt_splat_read(const char *path)
 			if (n != 2 || (strcasecmp(tok[1], "on") != 0 && strcasecmp(tok[1], "off") != 0))
 				lex_error(lx, "clip: expected \"clip on\" or \"clip off\"");
 			in->clip = strcasecmp(tok[1], "on") == 0;
-			clip_line = lex_lineno(lx);
 		} else if (strcasecmp(kw, "window") == 0 && n >= 2 && strcasecmp(tok[1], "auto") == 0) {
 			in->margin = -1;
 			if (n == 4 && strcasecmp(tok[2], "margin") == 0) {
@@ -482,7 +479,7 @@ struct splat_input *fmt_splat_read(const char *path)
 	if (!have_window)
 		lex_error(lx, "no window statement (the simulation cell is required)");
 	if (in->mask.nlayers || in->window_auto)
-		finish_layers(lx, in, clip_line);
+		finish_layers(lx, in);
 	const struct splat_mask *m = &in->mask;
 	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
 	double sy = WINDOW_SLACK * (m->ymax - m->ymin);
