@@ -308,6 +308,8 @@ static double edge_x(const struct edge *e, double y)
 	return e->xa + (e->xb - e->xa) * ((y - e->ya) / (e->yb - e->ya));
 }
 
+/* qsort has no context argument in C11: the slab being sorted (the sweep
+ * is single-threaded; a threaded caller would need its own sort) */
 static const struct sweep *cmp_sw;
 static int cmp_active(const void *pa, const void *pb)
 {
