@@ -26,6 +26,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* record types */
 enum {
@@ -338,14 +339,18 @@ static void parse(struct gds_lib *g);
 
 struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 {
+	/* name the statement that asked, not only the file; a device or a
+	 * pipe named in an input file must not be read without end */
+	const char *pre = ctx ? ctx : "", *sep = ctx ? ": " : "";
+	struct stat st;
+	if (stat(path, &st) != 0)
+		die("%s%s%s: cannot open:", pre, sep, path);
+	if (!S_ISREG(st.st_mode))
+		die("%s%s%s: not a regular file", pre, sep, path);
+	if ((double)st.st_size > FMT_GDS_MAX_BYTES)
+		die("%s%s%s: %.3g GB; the reader holds a layout in memory and reads at most "
+		    "%.3g GB", pre, sep, path, (double)st.st_size / 1e9, FMT_GDS_MAX_BYTES / 1e9);
 	struct gds_lib *g = gds_new(path, ctx);
-	if (ctx) {
-		/* name the statement that asked, not only the file */
-		FILE *t = fopen(path, "rb");
-		if (!t)
-			die("%s: %s: cannot open:", ctx, path);
-		fclose(t);
-	}
 	g->buf = lex_slurp(path, &g->len);
 	parse(g);
 	return g;

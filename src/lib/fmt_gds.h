@@ -24,7 +24,11 @@
 
 struct gds_lib;         /* opaque */
 
-/* Reads and checks the record structure of path; dies with one line
+/* Largest file read (it is held in memory whole), bytes. */
+#define FMT_GDS_MAX_BYTES 4e9
+
+/* Reads and checks the record structure of path (a regular file, at most
+ * FMT_GDS_MAX_BYTES; .gz is read through gzip); dies with one line
  * "prog: [ctx: ]path: byte N: what is wrong" on a malformed file
  * (truncated, bad record length or type, bad counts, missing cell).  ctx
  * (may be NULL) names who asked, e.g. "mask.in:4". */

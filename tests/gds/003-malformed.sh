@@ -64,4 +64,8 @@ check miss.gds 'byte 96: SREF to a missing cell "C9"'
 cp c2.gds self.gds; printf '0' | dd of=self.gds bs=1 seek=105 conv=notrunc 2>/dev/null
 check self.gds 'reference loop' " cell C0"
 check c2.gds 'no cell named "X"' " cell X"
+# not a regular file: a device would be read without end
+printf 'window -2 2 -2 2\ngds /dev/zero layer 1\n' >dev.in
+expect_error splat -q -o dev.cont dev.in
+grep -q "^splat: dev.in:2: /dev/zero: not a regular file" err.txt || fail "/dev/zero: $(cat err.txt)"
 exit 0
