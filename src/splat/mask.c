@@ -30,7 +30,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static struct orders *mask_orders_poly(const struct splat_mask *m, double fmax);
+static struct orders *mask_orders_poly(const struct splat_mask *m, struct orders *o,
+					double fm);
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -211,8 +212,6 @@ static void polygon_orders(const struct splat_mask *m, const struct orders *o,
 
 struct orders *mask_orders(const struct splat_mask *m, double fmax)
 {
-	if (m->nlayers)
-		return mask_orders_poly(m, fmax);
 
 	struct orders *o = xcalloc(1, sizeof *o);
 	o->lx = m->xmax - m->xmin;
@@ -224,6 +223,8 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	o->nmax = (int)floor(fm * o->ly);
 	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
 
+	if (m->nlayers)
+		return mask_orders_poly(m, o, fm);
 	/* the cells and their transmissions */
 	double *ex, *ey;
 	int nex = edges(m, 0, m->xmin, m->xmax, &ex);
@@ -302,15 +303,11 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	return o;
 }
 
-/* The same orders for a mask with polygon or gds layers. */
-static struct orders *mask_orders_poly(const struct splat_mask *m, double fmax)
+/* The orders of o (period and counts set by mask_orders) for a mask with
+ * polygon or gds layers, |f| <= fm. */
+static struct orders *mask_orders_poly(const struct splat_mask *m, struct orders *o,
+				       double fm)
 {
-	struct orders *o = xcalloc(1, sizeof *o);
-	o->lx = m->xmax - m->xmin;
-	o->ly = m->ymax - m->ymin;
-	double fm = fmax * (1 + 1e-9);  /* as in mask_orders */
-	o->mmax = (int)floor(fm * o->lx);
-	o->nmax = (int)floor(fm * o->ly);
 	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
 	double complex bg = phasor(m->bg_t, m->bg_phase);
 	double complex *cc = xcalloc((size_t)nm * nn, sizeof *cc);
