@@ -10,11 +10,14 @@
  * ("coma 0.4 lambda at field (1,0)", thesis 9.3.3).
  */
 #include "fmt_splat.h"
+#include "fmt_gds.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
 
+#include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -146,11 +149,206 @@ static void resist_stack(struct lex *lx, struct splat_input *in, char **tok, int
 	in->resist_line = lex_lineno(lx);
 }
 
+/* ---- polygon, gds, clip and window auto (the layout statements) ---- */
+
+/* Most vertices in one polygon statement: the simplicity check is
+ * quadratic, and a hand-written polygon is short. */
+enum { SPLAT_MAX_POLY = 10000 };
+
+static struct splat_layer *new_layer(struct splat_input *in, size_t *cap, struct lex *lx)
+{
+	xgrow(&in->mask.layers, cap, (size_t)in->mask.nlayers + 1, sizeof *in->mask.layers);
+	struct splat_layer *l = &in->mask.layers[in->mask.nlayers++];
+	memset(l, 0, sizeof *l);
+	l->t = 1;
+	l->phase = 0;
+	l->after = in->mask.nrects;
+	l->line = lex_lineno(lx);
+	l->datatype = -1;
+	return l;
+}
+
+/* polygon x1 y1 ... xn yn [t T PHASE] */
+static void polygon_statement(struct lex *lx, struct splat_input *in, size_t *cap,
+			      char **tok, int n)
+{
+	const char *kw = tok[0];
+	int nc = n - 1;
+	double t = 1, ph = 0;
+	if (nc >= 3 && strcasecmp(tok[n - 3], "t") == 0) {
+		trans_phase(lx, kw, tok[n - 2], tok[n - 1], &t, &ph);
+		nc -= 3;
+	}
+	if (nc < 6 || nc % 2 != 0)
+		lex_error(lx, "polygon: expected \"polygon x1 y1 x2 y2 x3 y3 ... [t T PHASE]\" "
+			  "(at least 3 vertices, x y pairs)");
+	if (nc / 2 > SPLAT_MAX_POLY)
+		lex_error(lx, "polygon: more than %d vertices", SPLAT_MAX_POLY);
+	double *xy = xreallocarray(NULL, (size_t)nc, sizeof *xy);
+	for (int i = 0; i < nc; i++)
+		xy[i] = number(lx, kw, i % 2 ? "a vertex y" : "a vertex x", tok[i + 1]);
+	int nv = poly_dedup(xy, nc / 2);
+	int ei, ej, line = 1;
+	for (int i = 2; i < nv && line; i++)
+		line = (xy[2] - xy[0]) * (xy[2 * i + 1] - xy[1]) ==
+		       (xy[3] - xy[1]) * (xy[2 * i] - xy[0]);
+	if (nv < 3 || line || !poly_simple(xy, nv, &ei, &ej)) {
+		if (nv < 3 || line)
+			ei = ej = 0;
+		free(xy);
+		if (nv < 3 || ei == ej)
+			lex_error(lx, "polygon: zero area");
+		lex_error(lx, "polygon: not simple: edge %d meets edge %d (edges self-intersect)",
+			  ei + 1, ej + 1);
+	}
+	struct splat_layer *l = new_layer(in, cap, lx);
+	l->t = t;
+	l->phase = ph;
+	l->pxy = xy;
+	l->pn = nv;
+	poly_set_add(&l->shapes, xy, nv);
+}
+
+/* "L" or "L/D", each 0..65535 */
+static void layer_spec(struct lex *lx, const char *s, int *layer, int *dt)
+{
+	char buf[64];
+	if (strlen(s) >= sizeof buf)
+		lex_error(lx, "gds: expected a layer L or L/D, found \"%.40s\"", s);
+	strcpy(buf, s);
+	char *slash = strchr(buf, '/');
+	long l, d = -1;
+	if (slash)
+		*slash = '\0';
+	if (!num_parse_count(buf, 0, 65535, &l) ||
+	    (slash && !num_parse_count(slash + 1, 0, 65535, &d)))
+		lex_error(lx, "gds: expected a layer L or L/D (0 to 65535), found \"%.40s\"", s);
+	*layer = (int)l;
+	*dt = (int)d;
+}
+
+/* A relative FILE is relative to the folder of the input file. */
+static char *resolve_path(const char *input, const char *file)
+{
+	if (file[0] == '/' || strcmp(input, "-") == 0 || strcmp(input, "stdin") == 0)
+		return xstrdup(file);
+	const char *slash = strrchr(input, '/');
+	if (!slash)
+		return xstrdup(file);
+	size_t dl = (size_t)(slash - input) + 1;
+	char *p = xmalloc(dl + strlen(file) + 1);
+	memcpy(p, input, dl);
+	strcpy(p + dl, file);
+	return p;
+}
+
+/* gds FILE layer L[/D] [cell NAME] [T PHASE] */
+static void gds_statement(struct lex *lx, struct splat_input *in, size_t *cap,
+			  char **tok, int n)
+{
+	static const char form[] = "gds FILE layer L[/D] [cell NAME] [T PHASE]";
+	if (n < 4)
+		lex_error(lx, "gds: expected \"%s\"", form);
+	struct splat_layer *l = new_layer(in, cap, lx);
+	l->is_gds = 1;
+	l->gds_file = resolve_path(lex_name(lx), tok[1]);
+	int have_layer = 0;
+	for (int i = 2; i < n;) {
+		if (strcasecmp(tok[i], "layer") == 0 && i + 1 < n) {
+			layer_spec(lx, tok[i + 1], &l->layer, &l->datatype);
+			have_layer = 1;
+			i += 2;
+		} else if (strcasecmp(tok[i], "cell") == 0 && i + 1 < n) {
+			free(l->cell);
+			l->cell = xstrdup(tok[i + 1]);
+			i += 2;
+		} else if (i + 2 == n) {
+			trans_phase(lx, "gds", tok[i], tok[i + 1], &l->t, &l->phase);
+			i += 2;
+		} else {
+			lex_error(lx, "gds: unexpected \"%.40s\"; expected \"%s\"", tok[i], form);
+		}
+	}
+	if (!have_layer)
+		lex_error(lx, "gds: no layer; expected \"%s\"", form);
+}
+
+/* Loads the gds layers (window auto needs them all first), sets an auto
+ * window, then clips every layer to the window or checks that it lies
+ * inside. */
+static void finish_layers(struct lex *lx, struct splat_input *in)
+{
+	struct splat_mask *m = &in->mask;
+	double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+	struct gds_lib *g = NULL;
+	const char *gpath = NULL;
+	for (int k = 0; k < m->nlayers; k++) {
+		struct splat_layer *l = &m->layers[k];
+		if (!l->is_gds)
+			continue;
+		char ctx[64];
+		snprintf(ctx, sizeof ctx, "%.40s:%ld", lex_name(lx), l->line);
+		if (!gpath || strcmp(gpath, l->gds_file) != 0) {
+			fmt_gds_free(g);
+			g = fmt_gds_read(l->gds_file, ctx);
+			gpath = l->gds_file;
+		}
+		double win[4] = {m->xmin, m->xmax, m->ymin, m->ymax};
+		fmt_gds_shapes(g, l->cell, l->layer, l->datatype,
+			       in->window_auto ? NULL : win, &l->shapes);
+		for (int i = 0; i < l->shapes.n; i++) {
+			const double *xy = poly_set_xy(&l->shapes, i);
+			for (int v = 0; v < poly_set_nv(&l->shapes, i); v++) {
+				bb[0] = fmin(bb[0], xy[2 * v]);
+				bb[1] = fmax(bb[1], xy[2 * v]);
+				bb[2] = fmin(bb[2], xy[2 * v + 1]);
+				bb[3] = fmax(bb[3], xy[2 * v + 1]);
+			}
+		}
+	}
+	fmt_gds_free(g);
+	if (in->window_auto) {
+		if (!(bb[1] > bb[0] && bb[3] > bb[2]))
+			lex_error(lx, "window auto: the gds statements give no shape to take "
+				  "the window from");
+		double mg = in->margin >= 0 ? in->margin : 2 * in->wavelength / in->na;
+		m->xmin = bb[0] - mg;
+		m->xmax = bb[1] + mg;
+		m->ymin = bb[2] - mg;
+		m->ymax = bb[3] + mg;
+	}
+	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
+	double sy = WINDOW_SLACK * (m->ymax - m->ymin);
+	for (int k = 0; k < m->nlayers; k++) {
+		struct splat_layer *l = &m->layers[k];
+		struct poly_set c;
+		memset(&c, 0, sizeof c);
+		for (int i = 0; i < l->shapes.n; i++) {
+			const double *xy = poly_set_xy(&l->shapes, i);
+			int nv = poly_set_nv(&l->shapes, i);
+			if (!l->is_gds && !in->clip) {
+				for (int v = 0; v < nv; v++)
+					if (xy[2 * v] < m->xmin - sx || xy[2 * v] > m->xmax + sx ||
+					    xy[2 * v + 1] < m->ymin - sy || xy[2 * v + 1] > m->ymax + sy)
+						die("%s:%ld: polygon is outside the window (give "
+						    "\"clip on\" to clip it)", lex_name(lx), l->line);
+			}
+			double *o;
+			int no = poly_clip_rect(xy, nv, m->xmin, m->xmax, m->ymin, m->ymax, &o);
+			if (no)
+				poly_set_add(&c, o, no);
+			free(o);
+		}
+		poly_set_free(&l->shapes);
+		l->shapes = c;
+	}
+}
+
 struct splat_input *fmt_splat_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
 	struct splat_input *in = xcalloc(1, sizeof *in);
-	size_t acap = 0, rcap = 0, ccap = 0;
+	size_t acap = 0, rcap = 0, ccap = 0, lcap = 0;
 	int have_window = 0;
 	long window_line = 0, source_line = 0;
 	in->wavelength = 0.436;
@@ -160,6 +358,7 @@ struct splat_input *fmt_splat_read(const char *path)
 	in->nx = in->ny = 51;
 	in->mask.bg_t = 0;
 	in->mask.bg_phase = 0;
+	in->margin = -1;
 
 	char **tok;
 	const int *quoted;
@@ -281,7 +480,28 @@ struct splat_input *fmt_splat_read(const char *path)
 			r.line = lex_lineno(lx);
 			xgrow(&in->mask.rects, &rcap, (size_t)in->mask.nrects + 1, sizeof r);
 			in->mask.rects[in->mask.nrects++] = r;
+		} else if (strcasecmp(kw, "polygon") == 0) {
+			polygon_statement(lx, in, &lcap, tok, n);
+		} else if (strcasecmp(kw, "gds") == 0) {
+			gds_statement(lx, in, &lcap, tok, n);
+		} else if (strcasecmp(kw, "clip") == 0) {
+			if (n != 2 || (strcasecmp(tok[1], "on") != 0 && strcasecmp(tok[1], "off") != 0))
+				lex_error(lx, "clip: expected \"clip on\" or \"clip off\"");
+			in->clip = strcasecmp(tok[1], "on") == 0;
+		} else if (strcasecmp(kw, "window") == 0 && n >= 2 && strcasecmp(tok[1], "auto") == 0) {
+			in->margin = -1;
+			if (n == 4 && strcasecmp(tok[2], "margin") == 0) {
+				in->margin = number(lx, kw, "a margin in micrometres", tok[3]);
+				if (in->margin < 0)
+					lex_error(lx, "window auto: the margin must not be negative");
+			} else if (n != 2) {
+				lex_error(lx, "window: expected \"window auto [margin m]\"");
+			}
+			in->window_auto = 1;
+			have_window = 1;
+			window_line = lex_lineno(lx);
 		} else if (strcasecmp(kw, "window") == 0) {
+			in->window_auto = 0;
 			want(lx, kw, n, 4, 4, "window xmin xmax ymin ymax");
 			double w[4];
 			for (int i = 0; i < 4; i++)
@@ -340,6 +560,8 @@ struct splat_input *fmt_splat_read(const char *path)
 		die("%s:%ld: the source reaches %g NA = %g, beyond the sine of 90 degrees "
 		    "(the largest source radius times NA must be at most 1)",
 		    lex_name(lx), source_line ? source_line : 1L, smax, smax * in->na);
+	if (in->mask.nlayers || in->window_auto)
+		finish_layers(lx, in);
 	const struct splat_mask *m = &in->mask;
 	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
 	double sy = WINDOW_SLACK * (m->ymax - m->ymin);
@@ -370,6 +592,14 @@ void fmt_splat_free(struct splat_input *in)
 		return;
 	free(in->aberr);
 	free(in->mask.rects);
+	for (int i = 0; i < in->mask.nlayers; i++) {
+		struct splat_layer *l = &in->mask.layers[i];
+		poly_set_free(&l->shapes);
+		free(l->pxy);
+		free(l->gds_file);
+		free(l->cell);
+	}
+	free(in->mask.layers);
 	for (int i = 0; i < in->ncutlines; i++)
 		free(in->cutlines[i].file);
 	free(in->cutlines);
@@ -390,6 +620,29 @@ static void put_name(FILE *f, const char *s)
 		fprintf(f, " \"%s\"", s);
 	else
 		fprintf(f, " %s", s);
+}
+
+/* A polygon as given, or a gds statement with its resolved file name
+ * (the window a gds statement was clipped to is written as the window). */
+static void write_layer(FILE *f, const struct splat_layer *l)
+{
+	if (l->is_gds) {
+		fputs("gds", f);
+		put_name(f, l->gds_file);
+		fprintf(f, " layer %d", l->layer);
+		if (l->datatype >= 0)
+			fprintf(f, "/%d", l->datatype);
+		if (l->cell) {
+			fputs(" cell", f);
+			put_name(f, l->cell);
+		}
+	} else {
+		fputs("polygon", f);
+		for (int i = 0; i < 2 * l->pn; i++)
+			put(f, l->pxy[i]);
+		fputs(" t", f);
+	}
+	put(f, l->t); put(f, l->phase); fputc('\n', f);
 }
 
 void fmt_splat_write(const char *path, const struct splat_input *in)
@@ -437,7 +690,14 @@ void fmt_splat_write(const char *path, const struct splat_input *in)
 	fputs("window", f); put(f, m->xmin); put(f, m->xmax); put(f, m->ymin); put(f, m->ymax);
 	fputc('\n', f);
 	fputs("background", f); put(f, m->bg_t); put(f, m->bg_phase); fputc('\n', f);
-	for (int i = 0; i < m->nrects; i++) {
+	if (in->clip)
+		fputs("clip on\n", f);
+	int nl = 0;
+	for (int i = 0; i <= m->nrects; i++) {
+		for (; nl < m->nlayers && m->layers[nl].after == i; nl++)
+			write_layer(f, &m->layers[nl]);
+		if (i == m->nrects)
+			break;
 		const struct splat_rect *r = &m->rects[i];
 		fputs("rect", f); put(f, r->x1); put(f, r->y1); put(f, r->x2); put(f, r->y2);
 		put(f, r->t); put(f, r->phase); fputc('\n', f);
@@ -459,6 +719,31 @@ void fmt_splat_mask_at(const struct splat_mask *m, double x, double y,
 {
 	*t = m->bg_t;
 	*phase = m->bg_phase;
+	if (m->nlayers) {
+		/* the last of the rects and layers in file order that covers it */
+		int nl = m->nlayers - 1;
+		for (int i = m->nrects; i >= 0; i--) {
+			for (; nl >= 0 && m->layers[nl].after == i; nl--) {
+				const struct splat_layer *l = &m->layers[nl];
+				for (int k = 0; k < l->shapes.n; k++)
+					if (poly_winding(poly_set_xy(&l->shapes, k),
+							 poly_set_nv(&l->shapes, k), x, y)) {
+						*t = l->t;
+						*phase = l->phase;
+						return;
+					}
+			}
+			if (i == 0)
+				break;
+			const struct splat_rect *r = &m->rects[i - 1];
+			if (x >= r->x1 && x <= r->x2 && y >= r->y1 && y <= r->y2) {
+				*t = r->t;
+				*phase = r->phase;
+				return;
+			}
+		}
+		return;
+	}
 	for (int i = m->nrects - 1; i >= 0; i--) {
 		const struct splat_rect *r = &m->rects[i];
 		if (x >= r->x1 && x <= r->x2 && y >= r->y1 && y <= r->y2) {

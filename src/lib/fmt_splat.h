@@ -12,17 +12,22 @@
  *   curvature w field hx hy   distortion w field hx hy      zernike n c
  *   background dark|clear|T PHASE
  *   rect x1 y1 x2 y2 [T PHASE]
- *   window xmin xmax ymin ymax
+ *   polygon x1 y1 x2 y2 ... xn yn [t T PHASE]
+ *   gds FILE layer L[/D] [cell NAME] [T PHASE]
+ *   clip on|off
+ *   window xmin xmax ymin ymax        window auto [margin m]
  *   grid nx ny
  *   contour FILE
  *   cutline x1 y1 x2 y2 npts FILE
  *
- * The mask is the background painted over by the rects in file order
- * (later ones win).  It repeats with the period of the window.  See
+ * The mask is the background painted over by the rects, polygons and
+ * gds unions in file order (later ones win).  It repeats with the period of the window.  See
  * man/man5/splat.5 for every statement, its defaults and its limits.
  */
 #ifndef S3D_FMT_SPLAT_H
 #define S3D_FMT_SPLAT_H
+
+#include "poly.h"
 
 /* Illumination shapes; sizes are in sigma units (fractions of NA). */
 enum splat_source {
@@ -66,12 +71,31 @@ struct splat_cutline {
 	long line;
 };
 
+/* A polygon statement, or the shapes of a gds statement: one union (its
+ * overlaps count once), painted with t and phase over the background and
+ * over the first `after` rects and every earlier layer. */
+struct splat_layer {
+	struct poly_set shapes;         /* micrometres, clipped to the window */
+	double t, phase;                /* amplitude transmission, degrees */
+	int after;                      /* rects that come before it in the file */
+	long line;
+	/* the statement, for fmt_splat_write */
+	int is_gds;
+	double *pxy;                    /* polygon: the vertices as given */
+	int pn;
+	char *gds_file;                 /* gds: the file, resolved against the input's folder */
+	char *cell;                     /* gds: NULL for the single top cell */
+	int layer, datatype;            /* gds: datatype -1 for all */
+};
+
 /* The mask alone: what drawmask needs. */
 struct splat_mask {
 	double xmin, xmax, ymin, ymax;  /* window = one period (micrometres) */
 	double bg_t, bg_phase;          /* background transmission, degrees */
 	int nrects;
 	struct splat_rect *rects;       /* in file order, later paints over earlier */
+	int nlayers;
+	struct splat_layer *layers;     /* in file order, interleaved with the rects by `after` */
 };
 
 struct splat_input {
@@ -102,6 +126,10 @@ struct splat_input {
 	double resist_thick;            /* T, micrometres */
 	double resist_index;            /* n, real refractive index */
 	long resist_line;
+	/* polygon and layout statements */
+	int clip;                       /* clip on: polygons may cross the window */
+	int window_auto;                /* window auto: from the gds shapes' bounding box */
+	double margin;                  /* window auto margin, micrometres (-1: 2 lambda/NA) */
 };
 
 /* Most planes of an image stack: far beyond any use (a plane every
@@ -119,7 +147,8 @@ void fmt_splat_free(struct splat_input *in);
 void fmt_splat_write(const char *path, const struct splat_input *in);
 
 /* Mask amplitude transmission and phase (degrees) at (x, y), taken inside
- * the window (the last rect containing the point wins, edges included). */
+ * the window (the last rect or layer containing the point wins, rect
+ * edges included). */
 void fmt_splat_mask_at(const struct splat_mask *m, double x, double y,
 		       double *t, double *phase);
 

@@ -1,8 +1,8 @@
 /*
  * drawmask - the mask of a splat input file, drawn to scale (thesis
  * Appendix B, drawmask(L)).  The window is painted with the background,
- * then every rect in file order, so the picture shows what splat sees
- * (later rects win where they overlap).
+ * then every rect, polygon and gds union in file order, so the picture
+ * shows what splat sees (later ones win where they overlap).
  *
  * Beyond the guide's BUGS: every transmission is drawn, as a gray level
  * from the intensity transmission |t|^2 (opaque dark, clear white), and a
@@ -128,6 +128,31 @@ static void area(struct draw *d, const struct plot_frame *f, double xa, double y
 	}
 }
 
+/* The shapes of a polygon or gds statement, filled by transmission; a
+ * phase other than 0 is shown by a dashed outline and the label (the
+ * hatching of rects needs a rectangular clip). */
+static void layer_area(struct draw *d, const struct plot_frame *f, const struct splat_layer *l)
+{
+	double *pg = NULL;
+	size_t cap = 0;
+	double ph = phase_norm(l->phase);
+	for (int i = 0; i < l->shapes.n; i++) {
+		int nv = poly_set_nv(&l->shapes, i);
+		const double *xy = poly_set_xy(&l->shapes, i);
+		xgrow(&pg, &cap, 2 * (size_t)nv, sizeof *pg);
+		for (int v = 0; v < nv; v++)
+			plot_frame_map(f, xy[2 * v], xy[2 * v + 1], &pg[2 * v], &pg[2 * v + 1]);
+		draw_set_line(d, 1, 0.8);
+		draw_polygon(d, nv, pg, fill_gray(l->t), 0);
+		if (ph != 0) {
+			draw_set_gray(d, 0);
+			draw_set_line(d, 2, 0.8);
+			draw_polygon(d, nv, pg, DRAW_NOFILL, 1);
+		}
+	}
+	free(pg);
+}
+
 static void feature_label(struct draw *d, const struct plot_frame *f,
 			  const struct splat_rect *r, int i, int full)
 {
@@ -160,7 +185,12 @@ static struct draw *render(void *vc)
 	struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
 	plot_frame_place(&f, d, c->s.equalscale);
 	area(d, &f, m->xmin, m->ymin, m->xmax, m->ymax, m->bg_t, m->bg_phase, 0);
-	for (int i = 0; i < m->nrects; i++) {
+	int nl = 0;
+	for (int i = 0; i <= m->nrects; i++) {
+		for (; nl < m->nlayers && m->layers[nl].after == i; nl++)
+			layer_area(d, &f, &m->layers[nl]);
+		if (i == m->nrects)
+			break;
 		const struct splat_rect *r = &m->rects[i];
 		area(d, &f, r->x1, r->y1, r->x2, r->y2, r->t, r->phase, 1);
 	}
@@ -170,6 +200,19 @@ static struct draw *render(void *vc)
 		const struct splat_rect *r = &m->rects[i];
 		if (c->labels || phase_norm(r->phase) != 0)
 			feature_label(d, &f, r, i, c->labels);
+	}
+	/* a layer (polygon or gds union) is labelled once, on its first shape */
+	for (int k = 0; k < m->nlayers; k++) {
+		const struct splat_layer *l = &m->layers[k];
+		if (l->shapes.n == 0 || !(c->labels || phase_norm(l->phase) != 0))
+			continue;
+		const double *xy = poly_set_xy(&l->shapes, 0);
+		struct splat_rect r = {xy[0], xy[1], xy[0], xy[1], l->t, l->phase, l->line};
+		for (int v = 1; v < poly_set_nv(&l->shapes, 0); v++) {
+			r.x1 = fmin(r.x1, xy[2 * v]); r.x2 = fmax(r.x2, xy[2 * v]);
+			r.y1 = fmin(r.y1, xy[2 * v + 1]); r.y2 = fmax(r.y2, xy[2 * v + 1]);
+		}
+		feature_label(d, &f, &r, m->nrects + k, c->labels);
 	}
 	plot_frame_draw(d, &f, 0, c->s.toplabel, c->s.xlabel, c->s.ylabel);
 	return d;

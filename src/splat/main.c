@@ -136,6 +136,14 @@ int main(int argc, char **argv)
 	if (!o.quiet)
 		fprintf(stderr, "splat: %s: %d rects, lambda %g um, NA %g, %dx%d grid\n",
 			o.input, m->nrects, in->wavelength, in->na, in->nx, in->ny);
+	if (!o.quiet && m->nlayers) {
+		long shapes = 0;
+		for (int k = 0; k < m->nlayers; k++)
+			shapes += m->layers[k].shapes.n;
+		fprintf(stderr, "splat: %s: %d polygon and gds statements, %ld shapes in the "
+			"window %g %g %g %g\n", o.input, m->nlayers, shapes, m->xmin, m->xmax,
+			m->ymin, m->ymax);
+	}
 
 	double est_n, est_pairs, est_s, est_b;
 	splat_estimate(in, &est_n, &est_pairs, &est_s, &est_b);

@@ -11,6 +11,17 @@
  *           + sum_cells (tau - tau_bg) X(m) Y(n),
  *   X(m) = (w/Lx) sinc(pi m w/Lx) exp(-i pi m (xa + xb)/Lx),  w = xb - xa,
  * so no sampling of the mask (and no aliasing) enters the image.
+ *
+ * With polygons or gds layers the painted mask is cut instead by the slab
+ * sweep of the library (poly_boundary) into boundary pieces, segments
+ * where the top layer changes from tau_L to tau_R, and the transform is
+ * summed over them exactly (Green's theorem with a field along x only, so
+ * horizontal edges contribute nothing):
+ *   fx != 0:  (tau_L - tau_R) e^{-2 pi i f.r_mid} h sinc(pi k h) / (-2 pi i fx),
+ *             k = fx dx/dy + fy, h the piece's height, r_mid its midpoint;
+ *   fx == 0:  (tau_L - tau_R) integral over the piece of x(y) e^{-2 pi i fy y} dy,
+ * both exact on the axes and at f = 0 (sinc and its moment are evaluated
+ * by series near 0).  Rect-only masks keep the cell path above unchanged.
  */
 #include "splat.h"
 #include "checked.h"
@@ -21,6 +32,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+static struct orders *mask_orders_poly(const struct splat_mask *m, struct orders *o,
+					double fm);
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -86,8 +100,122 @@ static void interval_ft(double a, double b, double len, int qmax, double complex
 	}
 }
 
+/* integral_0^H u sin(w u) du, by its series where the closed form
+ * cancels (|w H| small). */
+static double moment_sin(double w, double H)
+{
+	double a = w * H;
+	if (fabs(a) > 0.5)
+		return sin(a) / (w * w) - H * cos(a) / w;
+	/* sum_n (-1)^n w^(2n+1) H^(2n+3) / ((2n+1)! (2n+3)) */
+	double term = w * H * H * H, s = 0, fact = 1;
+	for (int n = 0; n < 12; n++) {
+		if (n > 0) {
+			fact *= (2.0 * n) * (2.0 * n + 1);
+			term *= -a * a;
+		}
+		s += term / (fact * (2 * n + 3));
+	}
+	return s;
+}
+
+/* The layer that the next shapes of transmission tau go to: painting
+ * twice with the same tau is a union, so consecutive statements with the
+ * same tau share one layer (and the result does not depend on how the
+ * shapes were split into statements). */
+static int layer_for(int *k, double complex *t, double complex tau)
+{
+	if (*k > 0 && t[*k - 1] == tau)
+		return *k - 1;
+	t[*k] = tau;
+	return (*k)++;
+}
+
+/* The painted mask as layers in paint order: rects (clamped to the window
+ * as above) and the splat layers, interleaved by file order. */
+static int paint_layers(const struct splat_mask *m, struct poly_set **out,
+			double complex **tau)
+{
+	int nl = m->nrects + m->nlayers;
+	struct poly_set *ls = xcalloc((size_t)nl, sizeof *ls);
+	double complex *t = xreallocarray(NULL, (size_t)nl, sizeof *t);
+	int k = 0, j = 0;
+	for (int i = 0; i <= m->nrects; i++) {
+		for (; j < m->nlayers && m->layers[j].after == i; j++) {
+			const struct splat_layer *l = &m->layers[j];
+			int to = layer_for(&k, t, phasor(l->t, l->phase));
+			for (int p = 0; p < l->shapes.n; p++)
+				poly_set_add(&ls[to], poly_set_xy(&l->shapes, p),
+					     poly_set_nv(&l->shapes, p));
+		}
+		if (i == m->nrects)
+			break;
+		const struct splat_rect *r = &m->rects[i];
+		double x1 = clampd(r->x1, m->xmin, m->xmax), x2 = clampd(r->x2, m->xmin, m->xmax);
+		double y1 = clampd(r->y1, m->ymin, m->ymax), y2 = clampd(r->y2, m->ymin, m->ymax);
+		double q[8] = {x1, y1, x2, y1, x2, y2, x1, y2};
+		poly_set_add(&ls[layer_for(&k, t, phasor(r->t, r->phase))], q, 4);
+	}
+	for (int i = k; i < nl; i++)
+		poly_set_free(&ls[i]);
+	*out = ls;
+	*tau = t;
+	return k;
+}
+
+/* cc[(n + nmax) * nm + m + mmax] += the transform of the painted layers,
+ * minus the background under them, divided by Lx Ly. */
+static void polygon_orders(const struct splat_mask *m, const struct orders *o,
+			   double complex bg, double complex *cc)
+{
+	struct poly_set *ls;
+	double complex *tau;
+	int nl = paint_layers(m, &ls, &tau);
+	struct poly_piece *pc;
+	size_t np = poly_boundary(ls, nl, &pc);
+	int nm = 2 * o->mmax + 1;
+	double area = o->lx * o->ly;
+	for (size_t i = 0; i < np; i++) {
+		const struct poly_piece *p = &pc[i];
+		double complex tl = p->left < 0 ? 0 : tau[p->left] - bg;
+		double complex tr = p->right < 0 ? 0 : tau[p->right] - bg;
+		double complex dt = (tl - tr) / area;
+		if (dt == 0)
+			continue;
+		double h = p->y1 - p->y0, b = (p->x1 - p->x0) / h;
+		double xm = 0.5 * (p->x0 + p->x1), ym = 0.5 * (p->y0 + p->y1);
+		for (int q = -o->nmax; q <= o->nmax; q++) {
+			double fy = q / o->ly;
+			double complex *row = cc + (size_t)(q + o->nmax) * nm + o->mmax;
+			for (int mm = -o->mmax; mm <= o->mmax; mm++) {
+				double fx = mm / o->lx;
+				double ph = -2 * M_PI * (fx * xm + fy * ym);
+				double complex e = cos(ph) + I * sin(ph);
+				if (mm != 0) {
+					double arg = M_PI * (fx * b + fy) * h;
+					double sinc = arg == 0 ? 1 : sin(arg) / arg;
+					/* e h sinc / (-2 pi i fx) = i e h sinc / (2 pi fx) */
+					row[mm] += dt * e * (I * (h * sinc / (2 * M_PI * fx)));
+				} else {
+					double w = 2 * M_PI * fy, arg = 0.5 * w * h;
+					double sinc = arg == 0 ? 1 : sin(arg) / arg;
+					/* integral of (xm + b u) e^{-i w u}, u in [-h/2, h/2] */
+					double complex v = xm * h * sinc - I * (2 * b * moment_sin(w, 0.5 * h));
+					row[mm] += dt * e * v;
+				}
+			}
+		}
+	}
+	free(pc);
+	for (int k = 0; k < nl; k++)
+		poly_set_free(&ls[k]);
+	free(ls);
+	free(tau);
+}
+
 struct orders *mask_orders(const struct splat_mask *m, double fmax)
 {
+
 	struct orders *o = xcalloc(1, sizeof *o);
 	o->lx = m->xmax - m->xmin;
 	o->ly = m->ymax - m->ymin;
@@ -100,6 +228,8 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	o->nmax = ck_int(floor(fm * o->ly), 0, (INT_MAX - 1) / 4, "diffraction orders along y");
 	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
 
+	if (m->nlayers)
+		return mask_orders_poly(m, o, fm);
 	/* the cells and their transmissions */
 	double *ex, *ey;
 	int nex = edges(m, 0, m->xmin, m->xmax, &ex);
@@ -175,6 +305,38 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	free(xf);
 	free(yf);
 	free(s);
+	return o;
+}
+
+/* The orders of o (period and counts set by mask_orders) for a mask with
+ * polygon or gds layers, |f| <= fm. */
+static struct orders *mask_orders_poly(const struct splat_mask *m, struct orders *o,
+				       double fm)
+{
+	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
+	double complex bg = phasor(m->bg_t, m->bg_phase);
+	double complex *cc = xcalloc((size_t)nm * nn, sizeof *cc);
+	polygon_orders(m, o, bg, cc);
+	cc[(size_t)o->nmax * nm + o->mmax] += bg;
+	size_t cap = (size_t)nm * nn;
+	o->m = xreallocarray(NULL, cap, sizeof *o->m);
+	o->k = xreallocarray(NULL, cap, sizeof *o->k);
+	o->fx = xreallocarray(NULL, cap, sizeof *o->fx);
+	o->fy = xreallocarray(NULL, cap, sizeof *o->fy);
+	o->c = xreallocarray(NULL, cap, sizeof *o->c);
+	for (int q = -o->nmax; q <= o->nmax; q++)
+		for (int p = -o->mmax; p <= o->mmax; p++) {
+			double fx = p / o->lx, fy = q / o->ly;
+			if (hypot(fx, fy) > fm)
+				continue;
+			o->m[o->n] = p;
+			o->k[o->n] = q;
+			o->fx[o->n] = fx;
+			o->fy[o->n] = fy;
+			o->c[o->n] = cc[(size_t)(q + o->nmax) * nm + p + o->mmax];
+			o->n++;
+		}
+	free(cc);
 	return o;
 }
 
