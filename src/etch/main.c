@@ -379,6 +379,10 @@ int main(int argc, char **argv)
 	char *n2, *nc;
 	output_names(&o, &n2, &nc);
 	struct ratefile *r = fmt_rate_read(o.input);
+	if (r->ny == 1) {
+		fmt_rate_free(r);
+		die("%s:1: a 2D rate array (ny = 1): etch is 3D, develop it with etch2d", o.input);
+	}
 	struct rfield f;
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);
