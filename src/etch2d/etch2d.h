@@ -75,9 +75,10 @@ void run_fmm(struct e2 *e);
 
 /* Runs the method of e->o (fills e->pf and e->st). */
 void e2_run(struct e2 *e);
-/* Sets up e over f (print times from o); e2_free releases what e holds
- * (not f). */
-void e2_init(struct e2 *e, const struct rfield *f, const struct e2opts *o);
+/* Sets up e over f (print times from o), and sets f->flat_outside (the
+ * substrate seen as its face's rate continued below); e2_free releases
+ * what e holds (not f). */
+void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o);
 void e2_free(struct e2 *e);
 
 /* profile.c: the output */
@@ -104,7 +105,7 @@ void contour_emit(struct e2 *e, const double *T, int nx, int nz, double t);
 void e2_cells(const struct e2 *e, int *nx, int *nz);
 
 /* front.c: strings of nodes for the surface methods */
-enum { ON_LEFT = 1, ON_RIGHT = 2, ON_TOP = 4, STOPPED = 8 };
+enum { ON_LEFT = 1, ON_RIGHT = 2, ON_TOP = 4, END = 16 };
 struct fnode {
 	double p[2], s[2];      /* position; unit direction (rays) */
 	unsigned flags;
@@ -117,14 +118,20 @@ struct front {
 void front_push(struct front *fr, double x, double z, double sx, double sz, unsigned flags);
 /* Wall flags of a node from its position. */
 unsigned front_walls(const struct e2 *e, const double p[2]);
-/* Boundary flattening (7.5.2.2): a node on a wall whose direction points
- * into the resist loses the normal component.  0 if nothing is left. */
+/* Boundary flattening (7.5.2.2): a node on a side wall whose direction
+ * points into the resist loses the normal component; an end of the string
+ * on the top (from a seed) keeps only its component along the top.  0 if
+ * nothing is left. */
 int front_flatten(const struct e2 *e, unsigned flags, double s[2]);
 /* Advances one node by dt along its ray (ray equation, recursive vector
- * checking with length rl, flattening, the substrate stopping it). */
+ * checking with length rl, flattening at the walls).  The substrate is a
+ * wall too, handled as the bottom face's rate continued below it (R(x,
+ * zmin), dR/dz = 0: any path below has its projection onto the substrate
+ * as fast), so nodes go on below it and front_emit draws the cleared
+ * substrate where the string runs under it. */
 void front_advance_ray(struct e2 *e, struct fnode *n, double dt, int depth);
 /* Cuts the string where it leaves the box through a side wall (and the top
- * when seeded), 7.5.2.1; nodes past the substrate are put back on it. */
+ * when seeded), 7.5.2.1. */
 void front_clip(struct e2 *e, struct front *fr);
 /* Cuts segments longer than smax (arc: on the arc the end directions
  * define, 7.5.1.1; else linear) and merges those shorter than smin. */
@@ -133,6 +140,8 @@ void front_remesh(struct e2 *e, struct front *fr, double smax, double smin, int 
  * many. */
 long front_deloop(struct e2 *e, struct front *fr);
 void front_emit(struct e2 *e, const struct front *fr);
+/* Marks the first and last nodes END (and no other). */
+void front_ends(struct e2 *e, struct front *fr);
 /* The start: from the resist top, nodes spaced at most seg along it
  * pointing down; from a seed (on the top), nseed nodes at the seed with
  * directions spread evenly over the half circle below the top, the

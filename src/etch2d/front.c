@@ -2,7 +2,8 @@
  * front.c - the string of nodes the surface methods move (thesis 6.2,
  * 6.3, 7.2-7.5): the ray advance of a node with recursive vector checking
  * (7.4.2) and boundary flattening (7.5.2.2), clipping at the side walls
- * (7.5.2.1), segment cutting with arc or linear interpolation (7.5.1.1)
+ * (7.5.2.1) and the substrate (a wall the front slides along, as the
+ * fast-marching reference's), segment cutting with arc or linear interpolation (7.5.1.1)
  * and merging (7.5.1.2), and 2D delooping (7.5.3.3).
  *
  * The string is open: it runs from the left wall (or the top, from a
@@ -65,7 +66,8 @@ int front_flatten(const struct e2 *e, unsigned flags, double s[2])
 {
 	if (flags & ON_LEFT && s[0] > 0) s[0] = 0;
 	if (flags & ON_RIGHT && s[0] < 0) s[0] = 0;
-	if (flags & ON_TOP && s[1] > 0) s[1] = 0;   /* the top is a wall from a seed */
+	/* the top is a wall from a seed: the string's ends slide along it */
+	if (flags & ON_TOP && flags & END) s[1] = 0;
 	double r = hypot(s[0], s[1]);
 	if (r < FLAT_TINY)
 		return 0;
@@ -100,8 +102,6 @@ void front_start(struct e2 *e, struct front *fr, double seg, long nseed)
 
 void front_advance_ray(struct e2 *e, struct fnode *n, double dt, int depth)
 {
-	if (n->flags & STOPPED)
-		return;
 	double s[2] = {n->s[0], n->s[1]};
 	if (!front_flatten(e, n->flags, s))
 		return;
@@ -121,19 +121,22 @@ void front_advance_ray(struct e2 *e, struct fnode *n, double dt, int depth)
 	if (n->flags & ON_TOP && s[1] == 0) q[1] = e->z1;
 	if (e->o.seeded && q[1] > e->z1)
 		q[1] = e->z1;
-	/* the substrate stops the development where the step crosses it */
-	if (q[1] <= e->z0) {
-		double a = n->p[1] - e->z0, b = n->p[1] - q[1];
-		double u = b > 0 ? a / b : 0;
-		q[0] = n->p[0] + u * (q[0] - n->p[0]);
-		q[1] = e->z0;
-		n->flags |= STOPPED;
-	}
 	n->p[0] = q[0], n->p[1] = q[1];
 	double r = hypot(s2[0], s2[2]);
 	if (r > 0)
 		n->s[0] = s2[0] / r, n->s[1] = s2[2] / r;
-	n->flags = (n->flags & STOPPED) | front_walls(e, n->p);
+	n->flags = (n->flags & END) | front_walls(e, n->p);
+}
+
+void front_ends(struct e2 *e, struct front *fr)
+{
+	for (size_t i = 0; i < fr->n; i++)
+		fr->v[i].flags &= ~(unsigned)END;
+	if (fr->n) {
+		fr->v[0].flags |= END;
+		fr->v[fr->n - 1].flags |= END;
+	}
+	(void)e;
 }
 
 static int outside(const struct e2 *e, const double p[2])
@@ -149,7 +152,7 @@ static void to_wall(const struct e2 *e, struct fnode *a, const struct fnode *b)
 	double u = (w - b->p[0]) / (a->p[0] - b->p[0]);
 	a->p[0] = w;
 	a->p[1] = b->p[1] + u * (a->p[1] - b->p[1]);
-	a->flags = (a->flags & STOPPED) | front_walls(e, a->p);
+	a->flags = front_walls(e, a->p);
 }
 
 void front_clip(struct e2 *e, struct front *fr)
@@ -173,9 +176,8 @@ void front_clip(struct e2 *e, struct front *fr)
 		struct fnode *n = &fr->v[i];
 		if (n->p[0] < e->x0) n->p[0] = e->x0;
 		if (n->p[0] > e->x1) n->p[0] = e->x1;
-		if (n->p[1] < e->z0) n->p[1] = e->z0, n->flags |= STOPPED;
 		if (e->o.seeded && n->p[1] > e->z1) n->p[1] = e->z1;
-		n->flags = (n->flags & STOPPED) | front_walls(e, n->p);
+		n->flags = front_walls(e, n->p);
 	}
 }
 
@@ -219,12 +221,6 @@ static struct fnode interp(const struct e2 *e, const struct fnode *a, const stru
 			n.s[0] = a->s[0], n.s[1] = a->s[1];
 	}
 	/* a new node between two on the substrate stays on it */
-	if (a->flags & b->flags & STOPPED) {
-		n.p[1] = e->z0;
-		n.flags |= STOPPED;
-	}
-	if (n.p[1] < e->z0)
-		n.p[1] = e->z0;
 	if (e->o.seeded && n.p[1] > e->z1)
 		n.p[1] = e->z1;
 	n.flags |= front_walls(e, n.p);
@@ -264,7 +260,6 @@ void front_remesh(struct e2 *e, struct front *fr, double smax, double smin, int 
 				*a = *b;        /* keep the end, drop a */
 			} else if (arc && !a_end) {
 				struct fnode mid = interp(e, a, b, 0.5, 1);
-				mid.flags |= a->flags & b->flags & STOPPED;
 				*a = mid;
 			}
 			continue;               /* b dropped */
@@ -322,7 +317,7 @@ long front_deloop(struct e2 *e, struct front *fr)
 			double r = hypot(s0, s1);
 			if (r > 0)
 				x.s[0] = s0 / r, x.s[1] = s1 / r;
-			x.flags = (fr->v[i].flags & fr->v[j + 1].flags & STOPPED) | front_walls(e, x.p);
+			x.flags = front_walls(e, x.p);
 			fr->v[i + 1] = x;
 			memmove(fr->v + i + 2, fr->v + j + 1, (fr->n - j - 1) * sizeof *fr->v);
 			fr->n -= j - i - 1;
@@ -335,11 +330,41 @@ long front_deloop(struct e2 *e, struct front *fr)
 
 void front_emit(struct e2 *e, const struct front *fr)
 {
-	if (fr->n < 2)
-		return;
-	double *p = xreallocarray(NULL, fr->n, 2 * sizeof *p);
-	for (size_t i = 0; i < fr->n; i++)
-		p[2 * i] = fr->v[i].p[0], p[2 * i + 1] = fr->v[i].p[1];
-	e2_curve(e, (int)fr->n, p);
+	/* The profile is the string inside the box: a run of nodes below
+	 * the substrate is where the substrate is cleared, drawn along it
+	 * from where the string goes under to where it comes back; nodes out
+	 * through a side wall (the ray method's) break the curve. */
+	double *p = xreallocarray(NULL, 2 * fr->n + 2, 2 * sizeof *p);
+	int np = 0;
+	for (size_t i = 0; i <= fr->n; i++) {
+		const struct fnode *n = i < fr->n ? &fr->v[i] : NULL;
+		if (!n || n->p[0] < e->x0 || n->p[0] > e->x1) {
+			e2_curve(e, np, p);
+			np = 0;
+			continue;
+		}
+		const struct fnode *m = i > 0 ? &fr->v[i - 1] : NULL;
+		int below = n->p[1] < e->z0, mbelow = m && m->p[1] < e->z0;
+		if (m && below != mbelow && m->p[0] >= e->x0 && m->p[0] <= e->x1) {
+			double u = (e->z0 - m->p[1]) / (n->p[1] - m->p[1]);
+			p[2 * np] = m->p[0] + u * (n->p[0] - m->p[0]);
+			p[2 * np + 1] = e->z0;
+			np++;
+		}
+		if (!below) {
+			p[2 * np] = n->p[0];
+			p[2 * np + 1] = n->p[1];
+			np++;
+		} else if (!m || m->p[0] < e->x0 || m->p[0] > e->x1) {
+			/* the curve starts under the substrate */
+			p[2 * np] = n->p[0];
+			p[2 * np + 1] = e->z0;
+			np++;
+		} else if (i + 1 == fr->n) {
+			p[2 * np] = n->p[0];
+			p[2 * np + 1] = e->z0;
+			np++;
+		}
+	}
 	free(p);
 }

@@ -145,6 +145,12 @@ void cells_emit(struct e2 *e, const unsigned char *etched, int nx, int nz, int o
 				double a[2] = {PX(i), PZ(k)}, b[2] = {PX(i + 1), PZ(k)};
 				soup_add(&sp, CORNER(i, k), a, CORNER(i + 1, k), b);
 			}
+			/* the substrate under an etched bottom cell: the profile runs
+			 * along it, as the surface methods' stopped nodes do */
+			if (k == 0 && me) {
+				double a[2] = {PX(i), e->z0}, b[2] = {PX(i + 1), e->z0};
+				soup_add(&sp, CORNER(i, 0), a, CORNER(i + 1, 0), b);
+			}
 			/* the top face of an unetched top cell under the developer */
 			if (k == nz - 1 && open_top && !me) {
 				double a[2] = {PX(i), e->z1}, b[2] = {PX(i + 1), e->z1};
@@ -225,6 +231,21 @@ void contour_emit(struct e2 *e, const double *T, int nx, int nz, double t)
 				}
 			}
 		}
+	/* where the front has reached the substrate the profile runs along
+	 * it (keys of nodes: negative, apart from the edges') */
+	for (int i = 0; i + 1 < nx; i++) {
+		int a = T[i] <= t, b = T[i + 1] <= t;
+		double pa[2] = {e->x0 + i * hx, e->z0}, pb[2] = {e->x0 + (i + 1) * hx, e->z0}, x[2];
+		if (a && b) {
+			soup_add(&sp, -1L - i, pa, -2L - i, pb);
+		} else if (a || b) {
+			cross(T, (size_t)i, (size_t)i + 1, t, pa, pb, x);
+			if (a)
+				soup_add(&sp, -1L - i, pa, 2L * i, x);
+			else
+				soup_add(&sp, 2L * i, x, -2L - i, pb);
+		}
+	}
 	soup_emit(e, &sp);
 	soup_free(&sp);
 }

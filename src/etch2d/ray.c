@@ -35,34 +35,24 @@ void run_ray(struct e2 *e)
 	front_start(e, &fr, seg, nseed);
 	e->st.items = (long)fr.n;
 	e->st.bytes = fr.cap * sizeof *fr.v;
-	double *p = xreallocarray(NULL, fr.n, 2 * sizeof *p);
 	int next = 0;
 	while (next < e->ntp) {
 		double tp = e->tp[next], step = dt;
 		int print = !(t + dt < tp - 1e-12 * tp);
 		if (print)
 			step = tp - t;
+		front_ends(e, &fr);
 		for (size_t i = 0; i < fr.n; i++)
 			front_advance_ray(e, &fr.v[i], step, 0);
 		e->st.steps++;
 		t = print ? tp : t + step;
 		if (print) {
 			e2_begin_set(e);
-			/* the rays' ends in order; a ray out of the box breaks the curve */
-			int np = 0;
-			for (size_t i = 0; i <= fr.n; i++) {
-				if (i < fr.n && fr.v[i].p[0] >= e->x0 && fr.v[i].p[0] <= e->x1) {
-					p[2 * np] = fr.v[i].p[0];
-					p[2 * np + 1] = fr.v[i].p[1];
-					np++;
-					continue;
-				}
-				e2_curve(e, np, p);
-				np = 0;
-			}
+			/* the rays' ends joined in order (front_emit: a ray out of
+			 * the box breaks the curve) */
+			front_emit(e, &fr);
 			next++;
 		}
 	}
-	free(p);
 	front_free(&fr);
 }

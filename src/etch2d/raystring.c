@@ -32,6 +32,7 @@ void run_raystring(struct e2 *e)
 		int print = !(t + dt < tp - 1e-12 * tp);
 		if (print)
 			step = tp - t;
+		front_ends(e, &fr);
 		for (size_t i = 0; i < fr.n; i++)
 			front_advance_ray(e, &fr.v[i], step, 0);
 		front_clip(e, &fr);

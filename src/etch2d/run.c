@@ -28,9 +28,10 @@ double e2_rate(const struct e2 *e, double x, double z, double g[2])
 	return r;
 }
 
-void e2_init(struct e2 *e, const struct rfield *f, const struct e2opts *o)
+void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o)
 {
 	memset(e, 0, sizeof *e);
+	f->flat_outside = 1;
 	e->f = f;
 	e->o = *o;
 	e->x0 = f->lo[0], e->x1 = f->hi[0];

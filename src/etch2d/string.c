@@ -73,6 +73,7 @@ void run_string(struct e2 *e)
 		int print = !(t + dt < tp - 1e-12 * tp);
 		if (print)
 			step = tp - t;
+		front_ends(e, &fr);
 		/* [I] directions from the string as it stands */
 		xgrow(&dir, &dcap, fr.n, sizeof *dir);
 		for (size_t i = 0; i < fr.n; i++) {
@@ -88,19 +89,10 @@ void run_string(struct e2 *e)
 		/* [II] every node by R dt along its direction */
 		for (size_t i = 0; i < fr.n; i++) {
 			struct fnode *n = &fr.v[i];
-			if (n->flags & STOPPED)
-				continue;
 			double d = e2_rate(e, n->p[0], n->p[1], NULL) * step;
-			double old = n->p[1];
 			n->p[0] += d * dir[i][0];
 			n->p[1] += d * dir[i][1];
-			if (n->p[1] <= e->z0) {
-				double u = old - n->p[1] > 0 ? (old - e->z0) / (old - n->p[1]) : 0;
-				n->p[0] -= (1 - u) * d * dir[i][0];
-				n->p[1] = e->z0;
-				n->flags |= STOPPED;
-			}
-			n->flags = (n->flags & STOPPED) | front_walls(e, n->p);
+			n->flags = (n->flags & END) | front_walls(e, n->p);
 		}
 		/* [III] keep the string in the box, its density even, loop-free */
 		front_clip(e, &fr);

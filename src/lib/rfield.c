@@ -39,6 +39,7 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 		f->h[d] = (hi[d] - lo[d]) / (n[d] - 1);
 	}
 	f->v = fmt_rate_values(r);
+	f->flat_outside = 0;
 	size_t total = (size_t)n[0] * n[1] * n[2];
 	f->rmax = 0;
 	for (size_t i = 0; i < total; i++) {
@@ -124,6 +125,10 @@ double rfield_eval(const struct rfield *f, const double p[3], double g[3])
 			face = d;
 	}
 	double r = cell_eval(f, c, t, g);
+	if (g && f->flat_outside)
+		for (int d = 0; d < 3; d++)
+			if (p[d] < f->lo[d] || p[d] > f->hi[d])
+				g[d] = 0;
 	if (g && face >= 0) {
 		/* On a face between cells the interpolant has a kink: take the
 		 * mean of the two one-sided slopes, so that mirror-symmetric

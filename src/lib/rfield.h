@@ -21,6 +21,11 @@ struct rfield {
 	const double *v;        /* rates, um/s, x fastest */
 	double rmax;            /* largest rate, um/s */
 	double gmax;            /* largest |grad R| of the interpolant, 1/s */
+	int flat_outside;       /* 0 (rfield_init): outside the box, grad R of
+				 * the nearest cell; 1: its component normal to
+				 * the face crossed is 0, as for the clamped rate
+				 * (etch2d's substrate, a wall seen as the face's
+				 * rate continued below it) */
 };
 
 /* Sets up f over r's rate array (not copied: r must outlive f).  Dies
