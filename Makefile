@@ -50,7 +50,7 @@ PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))
 PLOT_SHARE_OBJ := $(PLOT_SHARE:%.c=$(BUILD)/%.o)
 PROGS    := $(DIR_PROGS) $(PLOT_PROGS)
-BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D
+BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D $(BUILD)/bin/sample2D
 
 # C unit tests: tests/<area>/*.c, each linked with the library and with the
 # objects of src/<area>/ other than main.o (so tests can call into etch).
@@ -86,6 +86,11 @@ $(BUILD)/bin/sample3D: scripts/sample3D.sh
 	cp scripts/sample3D.sh $@
 	chmod +x $@
 
+$(BUILD)/bin/sample2D: scripts/sample2D.sh
+	@mkdir -p $(dir $@)
+	cp scripts/sample2D.sh $@
+	chmod +x $@
+
 # tests/<area>/<name>.c -> $(BUILD)/tests/<area>/<name>
 .SECONDEXPANSION:
 $(BUILD)/tests/%: tests/%.c $(LIB) $$(filter-out %/main.o,$$(patsubst %.c,$(BUILD)/%.o,$$(wildcard src/$$(firstword $$(subst /, ,$$*))/*.c)))
@@ -118,6 +123,8 @@ install: all
 	for p in $(PROGS); do cp $(BUILD)/bin/$$p $(DESTDIR)$(PREFIX)/bin/; done
 	cp scripts/sample3D.sh $(DESTDIR)$(PREFIX)/bin/sample3D
 	chmod +x $(DESTDIR)$(PREFIX)/bin/sample3D
+	cp scripts/sample2D.sh $(DESTDIR)$(PREFIX)/bin/sample2D
+	chmod +x $(DESTDIR)$(PREFIX)/bin/sample2D
 	cp man/man1/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp man/man5/*.5 $(DESTDIR)$(PREFIX)/share/man/man5/
 
