@@ -1,0 +1,50 @@
+#!/bin/sh
+# The thesis' study of 2D etching algorithms (chapters 3-7), remade with
+# etch2d.  Writes, in $OUT (default out/ here), plot files drawn into
+# PostScript by drawplot:
+#   fig3.3-cells{25,100,200}.plot  Dill's cells from a seed, uniform rate,
+#                                  0.1..1 s: the octagons of Figure 3.3
+#   fig4.2-huygens{10,40}.plot     Huygens cells at 10 and 40 cells a step
+#   fig6.4-string{0.1,0.02}.plot   the string from a seed, S_ideal 0.1, 0.02
+#   fig7.7-raystring.plot          the ray-string from a seed
+#   fig23.bin                      the Figure 2.3 rate (splat, bleach -cutline)
+#   fig3.4-{cell,string}.plot      cells (200 x 100) and string, 15..75 s
+#   table10.1-<method>.plot        every method, 15 and 30 s
+# The numbers (Table 10.1 remade, Table 3.1, Figure 3.3's overshoot) are
+# printed by `make bench` (tests/bench/etch2d.sh).
+# Usage: sh run.sh; needs splat, bleach, etch2d, drawplot on PATH (or
+# run from the build: PATH=build/bin:$PATH).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+draw() { drawplot -noplot -e "$1" </dev/null >/dev/null && mv dataplot.ps "${1%.plot}.ps"; }
+# a uniform 1 um/s over 2 x 1 um, the seed at the top centre
+printf 'RVAL3D 1\n2 1 2 1\n-1 1 0 0 -1 0\nrate\n1 1\n1 1\n' >uniform.rate
+for n in 25 100 200; do
+	etch2d -method cell -seed 0 0 -cells $((2 * n)) $n -et 1 -pt 0.1 -o fig3.3-cells$n.plot uniform.rate
+	draw fig3.3-cells$n.plot
+done
+for n in 10 40; do
+	etch2d -method huygens -seed 0 0 -cells $((20 * n)) $((10 * n)) -dt 0.1 -et 1 -pt 0.1 \
+		-o fig4.2-huygens$n.plot uniform.rate
+	draw fig4.2-huygens$n.plot
+done
+for s in 0.1 0.02; do
+	etch2d -method string -seed 0 0 -seg $s -et 1 -pt 0.1 -o fig6.4-string$s.plot uniform.rate
+	draw fig6.4-string$s.plot
+done
+etch2d -method raystring -seed 0 0 -seg 0.05 -et 1 -pt 0.1 -o fig7.7-raystring.plot uniform.rate
+draw fig7.7-raystring.plot
+# the Figure 2.3 rate: splat's 1.25 um isolated space, cut across, on
+# the Kodak 820 of Figure 2.2
+splat -q "$here/space.in"
+bleach -q -cutline -o fig23.bin space.2D "$here/../resists/kodak820-fig22.in"
+etch2d -method cell -cells 200 100 -et 75 -pt 15 -o fig3.4-cell.plot fig23.bin
+etch2d -method string -dt 0.092 -et 75 -pt 15 -o fig3.4-string.plot fig23.bin
+draw fig3.4-cell.plot
+draw fig3.4-string.plot
+for m in raystring string ray cell huygens fmm; do
+	etch2d -method $m -et 30 -pt 15 -stats -o table10.1-$m.plot fig23.bin
+	draw table10.1-$m.plot
+done
