@@ -26,13 +26,17 @@
 /* Most columns across a cutline: the along-cut bake is an nx x nx matrix. */
 #define CUT_MAX_NX 20000
 
-static struct {
+/* What cutline_bleach holds while it may still die, reachable from a
+ * global (not static: a write-only static may be optimised away) so that
+ * the sanitizers do not report a fatal error's memory as a leak. */
+struct cutline_held {
 	struct plot_file *pf;
 	struct ratefile *r;
 	double *dose, *col;
 	struct dose_table *t;
 	struct exposure e;
-} held;
+} cutline_held;
+#define held cutline_held
 
 /* Intensity at distance s, linear between the cutline's points (which
  * are in increasing s, as splat writes them). */
