@@ -37,6 +37,8 @@
 #define CELLS_MAX 4194304.0
 #define F_TINY 1e-9
 #define HUYGENS_CELLS_PER_STEP 10
+/* Most steps of a huygens run: beyond, it takes hours (-dt tiny). */
+#define HUYGENS_MAX_STEPS 1e6
 
 struct cgrid {
 	int n[3];
@@ -160,6 +162,13 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 		die("-seg %g: %.0f cells is more than the %.0f allowed (a larger -seg)", seg, total,
 		    CELLS_MAX);
 	size_t n = (size_t)total;
+	double dt = o->dt;
+	if (o->method == METHOD_HUYGENS && !(dt > 0))
+		dt = f->rmax > 0 ? HUYGENS_CELLS_PER_STEP * fmin(fmin(g.h[0], g.h[1]), g.h[2]) / f->rmax
+				 : o->et;
+	if (o->method == METHOD_HUYGENS && !(o->et / dt <= HUYGENS_MAX_STEPS))
+		die("%.3g time steps of %g s to -et %g is more than the %.0f allowed (a larger -dt)",
+		    o->et / dt, dt, o->et, HUYGENS_MAX_STEPS);
 	double bounds[6] = {f->lo[0], f->hi[0], f->lo[1], f->hi[1], f->lo[2], f->hi[2]};
 	g.et = xcalloc(n, 1);
 	double *rate = xreallocarray(NULL, n, sizeof *rate);
@@ -195,7 +204,6 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 	double *fr = NULL, *v = NULL;
 	size_t *list = NULL, *gone = NULL, nlist = 0;
 	unsigned char *inlist = NULL;
-	double dt = o->dt;
 	if (o->method == METHOD_CELL) {
 		fr = xreallocarray(NULL, n, sizeof *fr);
 		v = xreallocarray(NULL, n, sizeof *v);
@@ -214,9 +222,6 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 						inlist[c] = 1;
 					}
 				}
-	} else if (!(dt > 0)) {
-		dt = f->rmax > 0 ? HUYGENS_CELLS_PER_STEP * fmin(fmin(g.h[0], g.h[1]), g.h[2]) / f->rmax
-				 : o->et;
 	}
 	for (int q = 0; q < ntp; q++) {
 		double tp = tps[q];

@@ -101,6 +101,8 @@ void cells_emit(struct e2 *e, const unsigned char *etched, int nx, int nz, int o
 /* The contour T = t of node values T[k * nx + i] (fmm). */
 void contour_emit(struct e2 *e, const double *T, int nx, int nz, double t);
 
+/* Dies if et / dt steps is more than a run may take. */
+void e2_check_steps(const struct e2 *e, double dt);
 /* Default cell counts: cells[] from o, else 200 along the longer side. */
 void e2_cells(const struct e2 *e, int *nx, int *nz);
 

@@ -90,7 +90,10 @@ void front_start(struct e2 *e, struct front *fr, double seg, long nseed)
 		}
 		return;
 	}
-	long m = (long)ceil((e->x1 - e->x0) / seg - 1e-9);
+	double mm = ceil((e->x1 - e->x0) / seg - 1e-9);
+	if (!(mm < MAX_NODES))
+		die("-seg %g: %.3g nodes across the top, more than the %ld allowed", seg, mm, MAX_NODES);
+	long m = (long)mm;
 	if (m < 1)
 		m = 1;
 	for (long k = 0; k <= m; k++) {

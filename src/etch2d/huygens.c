@@ -32,13 +32,15 @@ void run_huygens(struct e2 *e)
 	e2_cells(e, &nx, &nz);
 	size_t n = (size_t)nx * nz;
 	double dx = (e->x1 - e->x0) / nx, dz = (e->z1 - e->z0) / nz;
+	double dt = e->o.dt;
+	if (!(dt > 0))
+		dt = e->f->rmax > 0 ? CELLS_PER_STEP * fmin(dx, dz) / e->f->rmax : e->o.et;
+	if (dt < e->o.et)
+		e2_check_steps(e, dt);
 	unsigned char *et = xcalloc(n, 1);
 	struct bcell *b = xreallocarray(NULL, n + (size_t)nx, sizeof *b);
 	e->st.bytes = n + (n + (size_t)nx) * sizeof *b;
 	e->st.total = (long)n;
-	double dt = e->o.dt;
-	if (!(dt > 0))
-		dt = e->f->rmax > 0 ? CELLS_PER_STEP * fmin(dx, dz) / e->f->rmax : e->o.et;
 	if (e->o.seeded) {
 		int i = (int)floor((e->o.seed[0] - e->x0) / dx);
 		int k = (int)floor((e->o.seed[1] - e->z0) / dz);

@@ -25,6 +25,7 @@ void run_ray(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};
+	e2_check_steps(e, dt);
 	long nseed = 0;
 	if (e->o.seeded) {
 		double m = ceil(M_PI * e->f->rmax * e->o.et / seg) + 1;

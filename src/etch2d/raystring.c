@@ -25,6 +25,7 @@ void run_raystring(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};
+	e2_check_steps(e, dt);
 	front_start(e, &fr, seg, SEED_RAYS);
 	int next = 0;
 	while (next < e->ntp) {

@@ -16,6 +16,8 @@
 #define PT_TINY 1e-9
 /* Most print times a run may ask for (-pt tiny against -et). */
 #define MAX_PRINTS 100000
+/* Most time steps of a run: beyond, a run takes hours (-dt tiny). */
+#define MAX_STEPS 1e7
 
 double e2_rate(const struct e2 *e, double x, double z, double g[2])
 {
@@ -87,4 +89,12 @@ void e2_run(struct e2 *e)
 	default: run_raystring(e); break;
 	}
 	e->st.cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
+}
+
+void e2_check_steps(const struct e2 *e, double dt)
+{
+	double n = e->o.et / dt;
+	if (!(n <= MAX_STEPS))
+		die("%.3g time steps of %g s to -et %g is more than the %.0f allowed (a larger -dt)",
+		    n, dt, e->o.et, MAX_STEPS);
 }

@@ -37,6 +37,7 @@ void run_string(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};
+	e2_check_steps(e, dt);
 	if (e->o.seeded) {
 		double r0 = e2_rate(e, e->o.seed[0], e->o.seed[1], NULL);
 		double t0 = dt;

@@ -2,7 +2,7 @@
 # etch2d: the command line and the file it writes.  Checks: bad options,
 # a missing -et (status 2), a 3D rate array, a seed outside the box or (for a surface
 # method) off the top, and too many cells each give one line "etch2d: ..."
-# and no output file; etch refuses a 2D array and points at etch2d; every
+# and no output file, as do runs of more than the allowed steps or nodes; etch refuses a 2D array and points at etch2d; every
 # method writes one set per print time (4 with -et 1 -pt 0.25) whose
 # bounds are the box, that drawplot draws; the output is byte-identical
 # between two runs; -stats prints its line; a 2D array round-trips through
@@ -32,6 +32,10 @@ grep -q "use etch" err.txt || fail "3D array refused without pointing at etch: $
 expect_error etch2d -et 1 -seed 5 0 -o out.plot r2.bin
 expect_error etch2d -et 1 -seed 0 -0.5 -o out.plot r2.bin
 expect_error etch2d -et 1 -method cell -cells 10000 10000 -o out.plot r2.bin
+# runs that would take hours or eat memory are refused up front
+expect_error etch2d -et 100 -dt 1e-9 -method huygens -o out.plot r2.bin
+expect_error etch2d -et 1e12 -o out.plot r2.bin
+expect_error etch2d -et 1 -seg 1e-12 -o out.plot r2.bin
 [ -e out.plot ] && fail "a refused run left out.plot"
 expect_error etch -et 1 r2.bin
 grep -q "etch2d" err.txt || fail "etch does not point at etch2d: $(cat err.txt)"
