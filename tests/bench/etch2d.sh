@@ -2,9 +2,9 @@
 # tests/bench/etch2d.sh [BUILD] - the thesis' study of 2D etching
 # algorithms remade (issue 17; thesis chapters 3-7, Table 10.1):
 #   - Figure 3.3: Dill's cells etching uniformly (1 um/s, 1 s) from a seed
-#     at 25, 100 and 200 cells/um: the largest overshoot of the circle
-#     (a perfect octagon: 1/cos 22.5 - 1 = 8.2 %) and the angle below the
-#     top where it lies; the thesis saw the facets sharpen with cell count;
+#     at 25 to 400 cells/um: the radius along rays at 0, 22.5, 45, 67.5 and
+#     90 degrees from straight down (a perfect octagon: 1/cos 22.5 = 1.082
+#     at 22.5 and 67.5); the thesis saw the facets sharpen with cell count;
 #   - Figure 4.2: the Huygens cells at 10 and 40 cells a step: largest
 #     error of the radius;
 #   - Table 3.1: the cell method's CPU time for 15 s on the Figure 2.3 rate
@@ -46,11 +46,11 @@ radial() {
 }
 
 "$mkrate" -o uni.bin 3 1 3 -1.2 1.2 0 0 -1.2 0 1 || exit 1
-echo "Figure 3.3: Dill's cells from a seed, uniform 1 um/s, 1 s (perfect octagon +0.0824 at 22.5 deg)"
-printf '  %-12s %-11s %-10s %-10s\n' "cells/um" overshoot "at (deg)" undershoot
-for n in 25 100 200; do
+echo "Figure 3.3: Dill's cells from a seed, uniform 1 um/s, 1 s: radius / (R t) along rays from straight down"
+echo "  (a perfect octagon: 1.0824 at 22.5 and 67.5 degrees, 1 at 0, 45, 90; the thesis: the facets sharpen with cell count)"
+for n in 25 50 100 200 400; do
 	"$B/etch2d" -et 1 -method cell -seed 0 0 -cells $((24 * n / 10)) $((12 * n / 10)) -o c.plot uni.bin
-	radial c.plot 1 | { read -r o a u; printf '  %-12s %-11s %-10s %-10s\n' $n "+$o" "$a" "-$u"; }
+	printf '  %3s cells/um  ' $n; awk -v t=1 -f "$TOP/tests/bench/radius-at-angles.awk" c.plot
 done
 echo "Figure 4.2: Huygens cells from a seed, uniform 1 um/s, 1 s"
 for n in 10 40; do

@@ -2,7 +2,8 @@
 # etch2d: the command line and the file it writes.  Checks: bad options,
 # a missing -et (status 2), a 3D rate array, a seed outside the box or (for a surface
 # method) off the top, and too many cells each give one line "etch2d: ..."
-# and no output file, as do runs of more than the allowed steps or nodes; etch refuses a 2D array and points at etch2d; every
+# and no output file, as do runs of more than the allowed steps or nodes;
+# etch refuses a 2D array and points at etch2d; every
 # method writes one set per print time (4 with -et 1 -pt 0.25) whose
 # bounds are the box, that drawplot draws; the output is byte-identical
 # between two runs; -stats prints its line; a 2D array round-trips through
