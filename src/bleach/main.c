@@ -15,6 +15,7 @@
 #include "args.h"
 #include "budget.h"
 #include "bleach.h"
+#include "cutline.h"
 #include "fmt_bleach.h"
 #include "fmt_contour.h"
 #include "fmt_rate.h"
@@ -31,6 +32,9 @@
 static const char usage[] =
 	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-big]\n"
 	"              [-threads n] contour-file bleach-inputfile\n"
+	"       bleach -cutline [-ascii] [-o rate-file] [-q] cutline-plot bleach-inputfile\n"
+	"  -cutline       the first file is a cutline of splat (a 2D plot file): write the\n"
+	"                 2D rate array (ny = 1) over (distance along the cut, z) for etch2d\n"
 	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
 	"  -solid         also write mxyz.solid.3D, the surface M = level, for pdraw\n"
 	"  -m level       M of that surface (default 0.8)\n"
@@ -53,7 +57,7 @@ static const double T_POINT = 3e-7, T_OUT = 1e-6, B_POINT = 32;
 #define BLEACH_MAX_POINTS (1L << 26)
 
 struct options {
-	int ascii, solid, quiet;
+	int ascii, solid, quiet, cutline;
 	long threads;
 	double level;
 	const char *output;
@@ -75,6 +79,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->ascii = 1;
 		else if (args_flag(&a, "-solid"))
 			o->solid = 1;
+		else if (args_flag(&a, "-cutline"))
+			o->cutline = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
 		else if (args_flag(&a, "-big"))
@@ -90,6 +96,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else
 			args_operand(&a, (const char **[]){&o->contour, &o->input}, 2, "file");
 	}
+	if (o->cutline && o->solid)
+		args_error(&a, "-solid draws a 3D array: not with -cutline");
 	if (!o->contour)
 		args_error(&a, "no contour-file");
 	else if (!o->input)
@@ -200,6 +208,11 @@ int main(int argc, char **argv)
 	parse_options(argc, argv, &o);
 	quiet = o.quiet;
 	par_set_threads((int)o.threads);
+	if (o.cutline) {
+		cutline_bleach(o.contour, o.input, o.output ? o.output : o.ascii ? "rval.2D" :
+			       "rval.2D.binary", o.ascii, o.quiet);
+		return 0;
+	}
 
 	/* -dose D: the range of bleach(5)'s dose statement; a bad value is a
 	 * one-line usage error (sweep scripts read it in a log) */

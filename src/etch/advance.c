@@ -34,10 +34,6 @@
 /* Rays shorter than this after flattening point straight into the wall:
  * the node has no direction to slide in and waits for the next step. */
 #define FLAT_TINY 1e-12
-/* R1 below this (um/s) counts as zero in the thesis form [A.33], which
- * divides by R1; the limit form s2 = s1 - grad R dt is used instead. */
-#define RATE_TINY 1e-300
-
 /* What one advance needs; st is the worker's own counters (summed after
  * the parallel loop, so the totals do not depend on the split). */
 struct ctx {
@@ -50,75 +46,9 @@ struct ctx {
  * par_for some. */
 #define PAR_MIN_NODES 256
 
-static void normalize(double s[3])
-{
-	double r = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-	if (r > 0) {
-		s[0] /= r;
-		s[1] /= r;
-		s[2] /= r;
-	}
-}
-
-/* The right-hand side of the ray system at (p, s). */
-static void deriv(const struct rfield *f, const double p[3], const double s[3],
-		  double dp[3], double ds[3])
-{
-	double g[3];
-	double r = rfield_eval(f, p, g);
-	double sg = s[0] * g[0] + s[1] * g[1] + s[2] * g[2];
-	for (int d = 0; d < 3; d++) {
-		dp[d] = r * s[d];
-		ds[d] = -(g[d] - sg * s[d]);
-	}
-}
-
-static void step_rk4(const struct rfield *f, const double p[3], const double s[3],
-		     double dt, double p2[3], double s2[3])
-{
-	double k1p[3], k1s[3], k2p[3], k2s[3], k3p[3], k3s[3], k4p[3], k4s[3];
-	double q[3], u[3];
-	deriv(f, p, s, k1p, k1s);
-	for (int d = 0; d < 3; d++) {
-		q[d] = p[d] + 0.5 * dt * k1p[d];
-		u[d] = s[d] + 0.5 * dt * k1s[d];
-	}
-	deriv(f, q, u, k2p, k2s);
-	for (int d = 0; d < 3; d++) {
-		q[d] = p[d] + 0.5 * dt * k2p[d];
-		u[d] = s[d] + 0.5 * dt * k2s[d];
-	}
-	deriv(f, q, u, k3p, k3s);
-	for (int d = 0; d < 3; d++) {
-		q[d] = p[d] + dt * k3p[d];
-		u[d] = s[d] + dt * k3s[d];
-	}
-	deriv(f, q, u, k4p, k4s);
-	for (int d = 0; d < 3; d++) {
-		p2[d] = p[d] + dt / 6 * (k1p[d] + 2 * k2p[d] + 2 * k3p[d] + k4p[d]);
-		s2[d] = s[d] + dt / 6 * (k1s[d] + 2 * k2s[d] + 2 * k3s[d] + k4s[d]);
-	}
-	normalize(s2);
-}
-
-/* The thesis' step: [6.7], then [6.6]/[A.33] with grad R taken at P2
- * (6.3.1: "evaluate the etch-rate gradient at P2"). */
-static void step_euler(const struct rfield *f, const double p[3], const double s[3],
-		       double dt, double p2[3], double s2[3])
-{
-	double g[3];
-	double r1 = rfield_eval(f, p, NULL);
-	for (int d = 0; d < 3; d++)
-		p2[d] = p[d] + s[d] * r1 * dt;
-	double r2 = rfield_eval(f, p2, g);
-	for (int d = 0; d < 3; d++) {
-		if (r1 > RATE_TINY)
-			s2[d] = s[d] * (r2 / r1) - 0.5 * (r1 + r2) / r1 * g[d] * dt;
-		else
-			s2[d] = s[d] - g[d] * dt;
-	}
-	normalize(s2);
-}
+/* The ray step itself (deriv, RK4 and the thesis' Euler step) is
+ * raystep_rk4 / raystep_euler in the library (src/lib/rfield.c), shared
+ * with etch2d. */
 
 /* Boundary flattening, thesis 7.5.2.2: a node on a side wall whose ray
  * points into the volume loses the ray's component normal to the wall; a
@@ -150,9 +80,9 @@ static void advance_both(struct ctx *c, struct node *n, double dt, int depth)
 		return;
 	double p2[3], s2[3];
 	if (c->o->euler)
-		step_euler(f, n->p, s, dt, p2, s2);
+		raystep_euler(f, n->p, s, dt, p2, s2);
 	else
-		step_rk4(f, n->p, s, dt, p2, s2);
+		raystep_rk4(f, n->p, s, dt, p2, s2);
 	c->st->substeps++;
 	double dx = s2[0] - s[0], dy = s2[1] - s[1], dz = s2[2] - s[2];
 	if (sqrt(dx * dx + dy * dy + dz * dz) > c->o->rl && depth < MAX_DEPTH) {

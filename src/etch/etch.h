@@ -29,7 +29,7 @@
  * exponentially: 2.7 GB in 75 s from a 2x2x2 rate file). */
 #define ETCH_MESH_FACTOR 10
 
-enum method { METHOD_RAY, METHOD_FMM };
+enum method { METHOD_RAY, METHOD_FMM, METHOD_CELL, METHOD_HUYGENS };
 
 /* Seed points accepted (-seed repeated; thesis Figure 8.13 uses two). */
 enum { ETCH_MAX_SEEDS = 16 };
@@ -81,6 +81,10 @@ struct etch_stats {
 	double open_cut, open_left;     /* open border (um) after the cuts of the
 					 * last deloop, before joining, and after */
 };
+
+/* cells.c: -method cell and huygens, the thesis' cell methods in 3D
+ * (3.6, 4.3); writes curves.plot and curves.plot.2D itself. */
+void run_cells(const struct rfield *f, const struct etch_opts *o);
 
 /* start.c: the flat resist top (a regular triangulation of z = zmax with
  * segments of length seg, rays (0, 0, -1)) or a seed point. */

@@ -24,7 +24,7 @@
 static const char usage[] =
 	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
-	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm]\n"
+	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm|cell|huygens]\n"
 	"            [-refine n|nx ny nz|auto]\n"
 	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
 	"            [-threads n] rate-file\n"
@@ -46,7 +46,8 @@ static const char usage[] =
 	"                   to curves.cut\n"
 	"  -seed x y z      start from a seed point instead of the resist top\n"
 	"                   (repeat for several, at most 16)\n"
-	"  -method ray|fmm  ray-string (default) or fast-marching engine\n"
+	"  -method ray|fmm  ray-string (default) or fast-marching engine; cell or\n"
+	"                   huygens: the thesis' cell methods (cells of side -seg)\n"
 	"  -xcheck          after a ray-string run, report how far its nodes lie\n"
 	"                   from the fast-marching surface at each print time\n"
 	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
@@ -212,11 +213,15 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		o->method = METHOD_RAY;
 	else if (strcmp(method, "fmm") == 0)
 		o->method = METHOD_FMM;
+	else if (strcmp(method, "cell") == 0 || strcmp(method, "huygens") == 0)
+		o->method = method[0] == 'c' ? METHOD_CELL : METHOD_HUYGENS;
 	else
-		args_error(&a, "-method must be ray or fmm, not %.40s", method);
+		args_error(&a, "-method must be ray, fmm, cell or huygens, not %.40s", method);
 	if ((o->refine_auto || o->refine[0] * o->refine[1] * o->refine[2] > 1) &&
 	    o->method != METHOD_FMM && !o->xcheck)
 		args_error(&a, "-refine goes with -method fmm or -xcheck");
+	if (o->method >= METHOD_CELL && (o->xcheck || o->deloop || cutaxis))
+		args_error(&a, "-method cell and huygens take no -xcheck, -deloop or -cut");
 	if (o->xcheck && o->method == METHOD_FMM)
 		args_error(&a, "-xcheck compares the ray-string run with fast marching: not with -method fmm");
 	if (cutaxis) {
@@ -445,13 +450,20 @@ int main(int argc, char **argv)
 	/* the rate only: bleach's other arrays (M) are not read into memory */
 	static const char *const rate_only[] = {NULL};
 	struct ratefile *r = fmt_rate_read_arrays(o.input, rate_only);
+	if (r->ny == 1) {
+		fmt_rate_free(r);
+		die("%s:1: a 2D rate array (ny = 1): etch is 3D, develop it with etch2d", o.input);
+	}
 	struct rfield f;
 	rfield_init(&f, r, o.input);
 	check_inside(&f, &o);
 	estimate(r, &f, &o);
 	/* curves.plot, its .2D and the cut are committed together (util.h) */
 	aout_defer();
-	if (o.method == METHOD_FMM) {
+	if (o.method == METHOD_CELL || o.method == METHOD_HUYGENS) {
+		run_cells(&f, &o);
+		aout_finish();
+	} else if (o.method == METHOD_FMM) {
 		run_fmm(r, &f, &o);
 		aout_finish();
 	} else {

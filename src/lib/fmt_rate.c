@@ -113,7 +113,8 @@ double *fmt_rate_array(const struct ratefile *r, const char *name)
 }
 
 double fmt_rate_x(const struct ratefile *r, int i) { return r->xmin + (r->xmax - r->xmin) * i / (r->nx - 1); }
-double fmt_rate_y(const struct ratefile *r, int j) { return r->ymin + (r->ymax - r->ymin) * j / (r->ny - 1); }
+/* ny = 1 (a 2D x-z array): the single row sits at ymin */
+double fmt_rate_y(const struct ratefile *r, int j) { return r->ny > 1 ? r->ymin + (r->ymax - r->ymin) * j / (r->ny - 1) : r->ymin; }
 double fmt_rate_z(const struct ratefile *r, int k) { return r->zmin + (r->zmax - r->zmin) * k / (r->nz - 1); }
 
 void fmt_rate_free(struct ratefile *r)
@@ -130,7 +131,8 @@ void fmt_rate_free(struct ratefile *r)
 static const char *check_header(const struct ratefile *r)
 {
 	if (!(r->xmax > r->xmin)) return "xmax must be greater than xmin";
-	if (!(r->ymax > r->ymin)) return "ymax must be greater than ymin";
+	/* a 2D array (ny = 1) has no y extent: any finite y bounds do */
+	if (r->ny != 1 && !(r->ymax > r->ymin)) return "ymax must be greater than ymin";
 	if (!(r->zmax > r->zmin)) return "zmax must be greater than zmin";
 	return NULL;
 }
@@ -223,7 +225,7 @@ static struct ratefile *read_binary(const char *name, FILE *f, size_t len,
 	if (na < 1 || na > RATE_MAX_ARRAYS)
 		die("%s:1: bad array count %lu in binary rate file", name, (unsigned long)na);
 	for (int d = 0; d < 3; d++)
-		if (n[d] < 2 || n[d] > RATE_MAX_N)
+		if (n[d] < (d == 1 ? 1 : 2) || n[d] > RATE_MAX_N) /* ny = 1: a 2D array */
 			die("%s:1: bad grid size %lu in binary rate file", name, (unsigned long)n[d]);
 	/* the exact length the header implies, by checked arithmetic: with
 	 * 2^20 points a side and 2 arrays 8 pts na is 2^64, which wraps to 0
@@ -319,13 +321,14 @@ static struct ratefile *read_ascii(struct lex *lx)
 			  version, RATE_VERSION);
 	long n[3];
 	n[0] = lex_count(lx, "nx", 2, RATE_MAX_N);
-	n[1] = lex_count(lx, "ny", 2, RATE_MAX_N);
+	n[1] = lex_count(lx, "ny", 1, RATE_MAX_N);   /* ny = 1: a 2D x-z array */
 	n[2] = lex_count(lx, "nz", 2, RATE_MAX_N);
 	long na = lex_count(lx, "narrays", 1, RATE_MAX_ARRAYS);
 	double b[6];
 	for (int k = 0; k < 6; k++)
 		b[k] = lex_number(lx, bound_names[k]);
 	struct ratefile hdr = {0};
+	hdr.ny = (int)n[1];
 	hdr.xmin = b[0], hdr.xmax = b[1], hdr.ymin = b[2], hdr.ymax = b[3], hdr.zmin = b[4], hdr.zmax = b[5];
 	const char *err = check_header(&hdr);
 	if (err)

@@ -5,7 +5,8 @@
  * A regular grid over the resist: nx*ny*nz points including both ends,
  * x varying fastest, then y, then z; z runs from zmin (the substrate,
  * -thickness) to zmax (the resist top, 0).  Lengths in micrometres, rates
- * in micrometres per second.  Besides the rate the file may carry more
+ * in micrometres per second.  ny = 1 is a 2D x-z array (etch2d's input;
+ * its row sits at ymin, any y bounds accepted).  Besides the rate the file may carry more
  * arrays of the same shape, each with a name; bleach stores the PAC
  * concentration as "M".
  *

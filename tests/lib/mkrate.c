@@ -5,6 +5,7 @@
  *
  *   mkrate [-ascii] [-M expr] -o FILE nx ny nz xmin xmax ymin ymax zmin zmax EXPR
  *
+ * ny = 1 writes a 2D x-z array (etch2d's input; y = ymin throughout).
  * EXPR is in x, y, z (micrometres): + - * / ^, unary minus, parentheses,
  * exp log sqrt abs sin cos tan atan floor min(a,b) max(a,b), pi.  It is
  * compiled once into a small stack program and evaluated at every point.
@@ -244,7 +245,7 @@ int main(int argc, char **argv)
 	long n[3];
 	double b[6];
 	for (int d = 0; d < 3; d++)
-		if (!num_parse_count(pos[d], 2, RATE_MAX_N, &n[d]))
+		if (!num_parse_count(pos[d], d == 1 ? 1 : 2, RATE_MAX_N, &n[d])) /* ny = 1: 2D */
 			die("bad grid size \"%s\"", pos[d]);
 	for (int d = 0; d < 6; d++)
 		if (!num_parse(pos[3 + d], &b[d]))

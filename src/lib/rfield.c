@@ -1,5 +1,6 @@
 /*
- * rate.c - trilinear interpolation of the rate array and its gradient.
+ * rfield.c - trilinear interpolation of the rate array and its gradient,
+ * and one step of the ray equation over it (shared by etch and etch2d).
  *
  * The gradient is that of the trilinear interpolant inside the cell
  * holding the point, so R and grad R are consistent (the ray equation
@@ -7,7 +8,7 @@
  * cell faces, as the interpolant's derivative is; a point on a face takes
  * the cell above it (clamped at the last cell).
  */
-#include "rate.h"
+#include "rfield.h"
 
 #include "par.h"
 #include "util.h"
@@ -35,7 +36,9 @@ static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 	const struct rfield *f = j->f;
 	struct scan *w = &j->w[worker];
 	const int *n = f->n;
-	size_t sx = 1, sy = (size_t)n[0], sz = (size_t)n[0] * n[1];
+	/* with ny = 1 the y neighbour is the point itself (stride 0) */
+	size_t sx = 1, sy = n[1] > 1 ? (size_t)n[0] : 0, sz = (size_t)n[0] * n[1];
+	int ny = n[1] > 1 ? n[1] : 2;
 	for (size_t i = lo * sz; i < hi * sz; i++) {
 		if (!(f->v[i] >= 0)) {
 			if (i < w->bad)
@@ -51,7 +54,7 @@ static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 	 * the difference along one cell edge: so this is max |grad R|
 	 * exactly, as thesis 7.4.1 wants it. */
 	for (size_t k = lo; k < hi && k + 1 < (size_t)n[2]; k++)
-		for (int jj = 0; jj + 1 < n[1]; jj++)
+		for (int jj = 0; jj + 1 < ny; jj++)
 			for (int i = 0; i + 1 < n[0]; i++) {
 				const double *v = f->v + k * sz + jj * sy + i;
 				/* the squared slopes along the cell's 12 edges,
@@ -80,8 +83,17 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 	int n[3] = {r->nx, r->ny, r->nz};
 	double lo[3] = {r->xmin, r->ymin, r->zmin}, hi[3] = {r->xmax, r->ymax, r->zmax};
 	for (int d = 0; d < 3; d++) {
+		if (d == 1 && n[d] == 1) {
+			/* a 2D array: one row, the same at every y; the box
+			 * keeps the file's y bounds, the spacing is nominal */
+			f->n[d] = 1;
+			f->lo[d] = lo[d];
+			f->hi[d] = hi[d] > lo[d] ? hi[d] : lo[d];
+			f->h[d] = 1;
+			continue;
+		}
 		if (n[d] < 2)
-			die("%s:1: etch needs at least 2 grid points along %c, got %d",
+			die("%s:1: needs at least 2 grid points along %c, got %d",
 			    name, "xyz"[d], n[d]);
 		if (!(hi[d] > lo[d]))
 			die("%s:1: empty %c range", name, "xyz"[d]);
@@ -91,6 +103,7 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 		f->h[d] = (hi[d] - lo[d]) / (n[d] - 1);
 	}
 	f->v = fmt_rate_values(r);
+	f->flat_outside = 0;
 	/* planes of cells split among threads; max is independent of the
 	 * split, and the first bad point is the smallest index any finds */
 	int nw = par_threads();
@@ -119,7 +132,8 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 /* R and grad R in cell c at local coordinates t (each in [0, 1]). */
 static double cell_eval(const struct rfield *f, const int c[3], const double t[3], double g[3])
 {
-	size_t sx = 1, sy = (size_t)f->n[0], sz = (size_t)f->n[0] * f->n[1];
+	/* ny = 1: the y neighbour is the point itself, so dR/dy = 0 */
+	size_t sx = 1, sy = f->n[1] > 1 ? (size_t)f->n[0] : 0, sz = (size_t)f->n[0] * f->n[1];
 	const double *v = f->v + c[2] * sz + c[1] * sy + c[0];
 	double v000 = v[0], v100 = v[sx], v010 = v[sy], v110 = v[sx + sy];
 	double v001 = v[sz], v101 = v[sx + sz], v011 = v[sy + sz], v111 = v[sx + sy + sz];
@@ -147,6 +161,11 @@ double rfield_eval(const struct rfield *f, const double p[3], double g[3])
 	double t[3];
 	int face = -1;
 	for (int d = 0; d < 3; d++) {
+		if (f->n[d] == 1) {
+			c[d] = 0;
+			t[d] = 0;
+			continue;
+		}
 		double u = (p[d] - f->lo[d]) / f->h[d];
 		if (!(u > 0))           /* also catches NaN */
 			u = 0;
@@ -162,6 +181,10 @@ double rfield_eval(const struct rfield *f, const double p[3], double g[3])
 			face = d;
 	}
 	double r = cell_eval(f, c, t, g);
+	if (g && f->flat_outside)
+		for (int d = 0; d < 3; d++)
+			if (p[d] < f->lo[d] || p[d] > f->hi[d])
+				g[d] = 0;
 	if (g && face >= 0) {
 		/* On a face between cells the interpolant has a kink: take the
 		 * mean of the two one-sided slopes, so that mirror-symmetric
@@ -179,4 +202,88 @@ double rfield_eval(const struct rfield *f, const double p[3], double g[3])
 		}
 	}
 	return r;
+}
+
+/* ---- the ray equation, thesis [6.3] ----
+ *
+ * d/ds (s / R) = grad(1 / R), written in time (ds = R dt), is the system
+ *
+ *     dP/dt = R s,     ds/dt = -(grad R - (s . grad R) s),
+ *
+ * of which the thesis' step [6.7] + [6.6]/[A.33] (move P by R(P1) dt
+ * along s1; s2 = s1 + s1 (R2/R1 - 1) - 0.5 (R1 + R2)/R1 grad R dt) is
+ * the first-order (Euler) discretisation. */
+
+/* R1 below this (um/s) counts as zero in the thesis form [A.33], which
+ * divides by R1; the limit form s2 = s1 - grad R dt is used instead. */
+#define RATE_TINY 1e-300
+
+static void normalize(double s[3])
+{
+	double r = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+	if (r > 0) {
+		s[0] /= r;
+		s[1] /= r;
+		s[2] /= r;
+	}
+}
+
+/* The right-hand side of the ray system at (p, s). */
+static void deriv(const struct rfield *f, const double p[3], const double s[3],
+		  double dp[3], double ds[3])
+{
+	double g[3];
+	double r = rfield_eval(f, p, g);
+	double sg = s[0] * g[0] + s[1] * g[1] + s[2] * g[2];
+	for (int d = 0; d < 3; d++) {
+		dp[d] = r * s[d];
+		ds[d] = -(g[d] - sg * s[d]);
+	}
+}
+
+void raystep_rk4(const struct rfield *f, const double p[3], const double s[3],
+		 double dt, double p2[3], double s2[3])
+{
+	double k1p[3], k1s[3], k2p[3], k2s[3], k3p[3], k3s[3], k4p[3], k4s[3];
+	double q[3], u[3];
+	deriv(f, p, s, k1p, k1s);
+	for (int d = 0; d < 3; d++) {
+		q[d] = p[d] + 0.5 * dt * k1p[d];
+		u[d] = s[d] + 0.5 * dt * k1s[d];
+	}
+	deriv(f, q, u, k2p, k2s);
+	for (int d = 0; d < 3; d++) {
+		q[d] = p[d] + 0.5 * dt * k2p[d];
+		u[d] = s[d] + 0.5 * dt * k2s[d];
+	}
+	deriv(f, q, u, k3p, k3s);
+	for (int d = 0; d < 3; d++) {
+		q[d] = p[d] + dt * k3p[d];
+		u[d] = s[d] + dt * k3s[d];
+	}
+	deriv(f, q, u, k4p, k4s);
+	for (int d = 0; d < 3; d++) {
+		p2[d] = p[d] + dt / 6 * (k1p[d] + 2 * k2p[d] + 2 * k3p[d] + k4p[d]);
+		s2[d] = s[d] + dt / 6 * (k1s[d] + 2 * k2s[d] + 2 * k3s[d] + k4s[d]);
+	}
+	normalize(s2);
+}
+
+/* The thesis' step: [6.7], then [6.6]/[A.33] with grad R taken at P2
+ * (6.3.1: "evaluate the etch-rate gradient at P2"). */
+void raystep_euler(const struct rfield *f, const double p[3], const double s[3],
+		   double dt, double p2[3], double s2[3])
+{
+	double g[3];
+	double r1 = rfield_eval(f, p, NULL);
+	for (int d = 0; d < 3; d++)
+		p2[d] = p[d] + s[d] * r1 * dt;
+	double r2 = rfield_eval(f, p2, g);
+	for (int d = 0; d < 3; d++) {
+		if (r1 > RATE_TINY)
+			s2[d] = s[d] * (r2 / r1) - 0.5 * (r1 + r2) / r1 * g[d] * dt;
+		else
+			s2[d] = s[d] - g[d] * dt;
+	}
+	normalize(s2);
 }

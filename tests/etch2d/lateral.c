@@ -1,0 +1,88 @@
+/*
+ * lateral - a rate that varies across as well as down: an isolated space
+ * (a Gaussian of 0.35 um across) under standing waves, 0.003 to 0.11 um/s,
+ * on a 41 x 51 rate grid over 2 x 1 um (cells of 0.05 x 0.02 um),
+ * developed from the top for 60 s.  The reference is the fast-marching
+ * solution on a grid refined 16 times in x and 8 in z (0.003125 x 0.0025
+ * um), an independent method: it knows nothing of rays or strings.
+ *
+ * Checks, for the profiles at 20, 40 and 60 s, the distance of every
+ * profile point to the reference profile: median under half a cell and
+ * 95th percentile under two cells (the issue's figures; a cell is the rate
+ * grid's smaller spacing, 0.02 um), for raystring and for fmm at its
+ * default grid.  The others are printed for the record (the string's
+ * error, about half a cell at any step, is the thesis' point of 6.2).
+ */
+#include "e2test.h"
+
+#define CELL 0.02       /* um, the rate grid's smaller spacing */
+#define MED_TOL 0.5     /* cells, issue 17 */
+#define P95_TOL 2.0     /* cells, issue 17 */
+
+static double space(double x, double z)
+{
+	return 0.003 + 0.107 * exp(-(x * x) / (0.35 * 0.35)) *
+	       (0.55 - 0.45 * cos(2 * M_PI * (z + 0.02) / 0.13));
+}
+
+static int fails;
+static struct e2 ref;
+
+static void check(const char *name, int method, const struct ratefile *r, int strict)
+{
+	struct e2opts o;
+	t_opts(&o, method, 60, 20);
+	struct rfield f;
+	struct e2 e;
+	t_run(&e, r, &f, &o);
+	double med = 0, p95 = 0;
+	for (int s = 0; s < e.pf->nsets; s++) {
+		const struct plot_set *set = &e.pf->sets[s];
+		size_t n = 0, cap = 0;
+		double *d = NULL;
+		for (int c = 0; c < set->ncurves; c++)
+			for (int k = 0; k < set->curves[c].npts; k++) {
+				xgrow(&d, &cap, n + 1, sizeof *d);
+				d[n++] = t_dist(&ref.pf->sets[s], set->curves[c].p + 2 * k) / CELL;
+			}
+		if (n == 0) {
+			printf("FAIL %s: no profile at t = %g\n", name, e.tp[s]);
+			fails++;
+			continue;
+		}
+		double m = t_quantile(d, n, 0.5), q = t_quantile(d, n, 0.95);
+		if (m > med) med = m;
+		if (q > p95) p95 = q;
+		free(d);
+	}
+	printf("%-10s distance to the reference, cells: median %.3f, 95th percentile %.3f%s\n",
+	       name, med, p95, strict ? "" : " (not checked)");
+	if (strict && !(med < MED_TOL && p95 < P95_TOL)) {
+		printf("FAIL %s: want median < %g, 95th percentile < %g cells\n", name, MED_TOL, P95_TOL);
+		fails++;
+	}
+	e2_free(&e);
+}
+
+int main(void)
+{
+	util_setprog("lateral");
+	double b[4] = {-1, 1, -1, 0};
+	struct ratefile *r = t_rate(41, 51, b, space);
+	struct e2opts o;
+	t_opts(&o, M_FMM, 60, 20);
+	o.cells[0] = 640, o.cells[1] = 400;
+	struct rfield f;
+	t_run(&ref, r, &f, &o);
+	check("raystring", M_RAYSTRING, r, 1);
+	/* the string's directions come from the surface it has (6.2): about
+	 * half a cell off here whatever the step, printed for the record */
+	check("string", M_STRING, r, 0);
+	check("fmm", M_FMM, r, 1);
+	check("ray", M_RAY, r, 0);
+	check("cell", M_CELL, r, 0);
+	check("huygens", M_HUYGENS, r, 0);
+	e2_free(&ref);
+	fmt_rate_free(r);
+	return fails ? 1 : 0;
+}
