@@ -7,14 +7,19 @@
 need Xvfb
 need xdotool
 printf '0 1 0 1 0 1\n2\n2\n0 0 0\n1 1 1\n3\n0 0 1\n1 0 0\n0 1 0\n' >v.3D
-n=$(( ($$ % 400) + 100 ))
-Xvfb :$n -screen 0 800x800x24 -nolisten tcp >xvfb.log 2>&1 &
+# Xvfb picks a free display itself and writes its number (-displayfd),
+# so tests running at the same time never share a server
+Xvfb -displayfd 3 -screen 0 800x800x24 -nolisten tcp 3>dpy.txt >xvfb.log 2>&1 &
 xpid=$!
 trap 'kill $xpid 2>/dev/null' EXIT
-export DISPLAY=:$n
+i=0
+until [ -s dpy.txt ]; do
+	i=$((i + 1)); [ $i -lt 100 ] || skip "Xvfb did not start: $(head -c 200 xvfb.log)"; sleep 0.1
+done
+export DISPLAY=:$(head -n 1 dpy.txt)
 i=0
 until xdotool getmouselocation >/dev/null 2>&1; do
-	i=$((i + 1)); [ $i -lt 50 ] || skip "Xvfb did not start: $(head -c 200 xvfb.log)"; sleep 0.1
+	i=$((i + 1)); [ $i -lt 100 ] || skip "Xvfb did not answer: $(head -c 200 xvfb.log)"; sleep 0.1
 done
 pdraw v.3D </dev/null >out.txt 2>err.txt &
 ppid=$!
