@@ -192,6 +192,13 @@ int main(int argc, char **argv)
 		free(o.h);
 		die("%s: %s", o.input, err);
 	}
+	if (!o.force) {
+		double open = surf_open_border(s);
+		if (open > 0)
+			warn("%s: set %ld: the surface has %.3g um of open border inside the box "
+			     "(gaps, as delooping can leave): a section through a gap is decided "
+			     "by the ray test alone", o.input, setno, open);
+	}
 	surf_index(s);
 
 	struct result r;
