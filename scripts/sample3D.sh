@@ -98,6 +98,13 @@ etchopts="$etchopts -cut $cutaxis $cutval"
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
 [ -z "$measureopts" ] || [ -n "$etchtime" ] || bad "-measure needs -et (it measures etch's result)"
+if [ -n "$measureopts" ]; then
+	# measure's options are checked before any stage runs: on an empty
+	# input it stops with 1 if they are good, 2 (and its usage) if not
+	# shellcheck disable=SC2086
+	measure $measureopts /dev/null >/dev/null 2>&1 || [ $? -ne 2 ] ||
+		{ measure $measureopts /dev/null >/dev/null; exit 2; }
+fi
 
 # Check everything before running anything: a bad etch option must not
 # cost a splat and a bleach run and their overwritten outputs.

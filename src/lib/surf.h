@@ -99,4 +99,8 @@ double surf_top_along(const struct surf *s, int axis, double c, double lo, doubl
  * the surface. */
 long surf_crossings(const struct surf *s, long max);
 
+/* The total length (um) of the edges that only one triangle has, other
+ * than on the faces of the box: the gaps of the surface. */
+double surf_open_border(const struct surf *s);
+
 #endif

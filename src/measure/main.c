@@ -146,46 +146,75 @@ static void parse_options(int argc, char **argv, struct options *o)
 /* Too many crossings to be worth counting further. */
 enum { CROSS_REPORT_MAX = 1000 };
 
+/* The set to measure, as a surface; dies (having freed what it holds,
+ * so that runs under the leak checker stay clean on errors) if there is
+ * no such set or it is not triangles in a box. */
+static struct surf *load(struct options *o, long *setno)
+{
+	struct plot_file *pf = fmt_plot_read(o->input, 3);
+	*setno = o->set ? o->set : pf->nsets;
+	if (*setno > pf->nsets) {
+		int n = pf->nsets;
+		fmt_plot_free(pf);
+		free(o->h);
+		die("%s: no set %ld: the file has %d", o->input, *setno, n);
+	}
+	char err[200];
+	struct surf *s = surf_from_plot_set(&pf->sets[*setno - 1], err, sizeof err);
+	fmt_plot_free(pf);
+	if (!s) {
+		free(o->h);
+		die("%s: set %ld: %s", o->input, *setno, err);
+	}
+	return s;
+}
+
+/* The heights in um into z; checks them, the point and (unless -force)
+ * the surface: what is wrong goes into err (empty if nothing). */
+static void check(const struct options *o, const struct surf *s, long setno, double *z,
+		  char *err, size_t errsz)
+{
+	const double *box = s->box;
+	err[0] = '\0';
+	if (o->x < box[0] || o->x > box[1] || o->y < box[2] || o->y > box[3]) {
+		snprintf(err, errsz, "the point (%g, %g) is outside the box x %g..%g, y %g..%g",
+			 o->x, o->y, box[0], box[1], box[2], box[3]);
+		return;
+	}
+	for (int i = 0; i < o->nh; i++) {
+		z[i] = o->rel ? box[4] + o->h[i] / 100 * (box[5] - box[4]) : o->h[i];
+		if (!o->rel && (z[i] < box[4] || z[i] > box[5])) {
+			snprintf(err, errsz, "height z = %g is outside the resist (z from %g to %g)",
+				 z[i], box[4], box[5]);
+			return;
+		}
+	}
+	if (o->force)
+		return;
+	long n = surf_crossings(s, CROSS_REPORT_MAX);
+	if (n > 0) {
+		snprintf(err, errsz, "set %ld: the surface crosses itself (%s%ld crossing%s: "
+			 "loops left where etch fronts met); rerun etch with -deloop, "
+			 "or give measure -force", setno,
+			 n >= CROSS_REPORT_MAX ? "at least " : "", n, n == 1 ? "" : "s");
+		return;
+	}
+	double open = surf_open_border(s);
+	if (open > 0)
+		warn("%s: set %ld: the surface has %.3g um of open border inside the box "
+		     "(gaps, as delooping can leave): a section through a gap is decided "
+		     "by the ray test alone", o->input, setno, open);
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
-
-	/* every failure below frees what it holds first, so that a run under
-	 * the leak checker stays clean on errors too */
-	struct plot_file *pf = fmt_plot_read(o.input, 3);
-	long setno = o.set ? o.set : pf->nsets;
-	if (setno > pf->nsets) {
-		int n = pf->nsets;
-		fmt_plot_free(pf);
-		free(o.h);
-		die("%s: no set %ld: the file has %d", o.input, setno, n);
-	}
-	char err[200];
-	struct surf *s = surf_from_plot_set(&pf->sets[setno - 1], err, sizeof err);
-	fmt_plot_free(pf);
-	if (!s) {
-		free(o.h);
-		die("%s: set %ld: %s", o.input, setno, err);
-	}
-	const double *box = s->box;
+	long setno;
+	struct surf *s = load(&o, &setno);
 	double *z = xreallocarray(NULL, (size_t)o.nh, sizeof *z);
-	err[0] = '\0';
-	if (o.x < box[0] || o.x > box[1] || o.y < box[2] || o.y > box[3])
-		snprintf(err, sizeof err, "the point (%g, %g) is outside the box x %g..%g, y %g..%g",
-			 o.x, o.y, box[0], box[1], box[2], box[3]);
-	for (int i = 0; i < o.nh && !err[0]; i++) {
-		z[i] = o.rel ? box[4] + o.h[i] / 100 * (box[5] - box[4]) : o.h[i];
-		if (!o.rel && (z[i] < box[4] || z[i] > box[5]))
-			snprintf(err, sizeof err, "height z = %g is outside the resist (z from %g to %g)",
-				 z[i], box[4], box[5]);
-	}
-	long n = err[0] || o.force ? 0 : surf_crossings(s, CROSS_REPORT_MAX);
-	if (n > 0)
-		snprintf(err, sizeof err, "set %ld: the surface crosses itself (%s%ld crossing%s: "
-			 "loops left where etch fronts met); rerun etch with -deloop, "
-			 "or give measure -force", setno,
-			 n >= CROSS_REPORT_MAX ? "at least " : "", n, n == 1 ? "" : "s");
+	char err[200];
+	check(&o, s, setno, z, err, sizeof err);
 	if (err[0]) {
 		surf_free(s);
 		free(z);

@@ -5,8 +5,8 @@
 # cell: a cone hole (radius 0.3 um at the substrate, 0.6 um at the top)
 # in 0.7 um of resist whose top ripples by 1 nm, every coordinate printed
 # with 17 digits as etch prints most of its numbers.  Times the hole at
-# 10/50/90 % with the crossing check (the default) and without (-force),
-# best of three; asserts nothing.
+# 10/50/90 % with the crossing and open-border checks (the default) and
+# without them (-force), best of three; asserts nothing.
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
@@ -54,6 +54,6 @@ run() { # label, then measure arguments
 }
 # elapsed time, CPU time (a loaded machine stretches the first, not the
 # second) and peak memory (the file is read whole, as every reader does)
-run "hole at 10/50/90 %, crossing check" -rel 10,50,90 -hole 0 0
+run "hole at 10/50/90 %, with the checks" -rel 10,50,90 -hole 0 0
 run "hole at 10/50/90 %, -force (no check)" -force -rel 10,50,90 -hole 0 0
 run "line along x at 50 %, -force" -force -rel 50 -line 1.5 0 x

@@ -4,7 +4,8 @@
 # orientation:
 #   - a truncated-cone hole (bottom radius 0.3, top 0.6 um, 0.7 um resist),
 #   - a trapezoidal line (bottom 0.8, top 0.5 um),
-#   - an undercut space (bottom 0.9, top 0.5 um: swa above 90),
+#   - an undercut space (bottom 0.9, top 0.5 um: swa above 90) and a
+#     re-entrant hole (radius 0.6 at the bottom, 0.3 at the top),
 #   - a hole that does not clear (bottom at -0.4 um, cd 0 below),
 #   - a hole and a line with 0.05 um of resist loss.
 # -plot writes the table's cd against z.
@@ -83,6 +84,16 @@ measure -rel 10 -line -0.44 0 x under.plot >ov.txt 2>/dev/null || fail "measure 
 # (at 10 % the left wall is at x = -0.45 + 0.2 * 0.1)
 check ov.txt -0.63 "$(awk 'BEGIN { print 2.5 - 0.45 + 0.2 * 0.1 }')"
 [ "$(figure under.txt cleared)" = yes ] || fail "undercut space not cleared"
+
+# a re-entrant hole (radius 0.6 at the bottom, 0.3 at the top): the
+# resist overhangs it, swa = 90 + atan(0.3 / 0.7)
+synth -v kind=rev -v prof="0 -0.7 0.6 -0.7 0.3 0 3 0" -v seed=8 >reent.plot
+measure -rel 10,50,90 -hole 0 0 reent.plot >reent.txt || fail "measure re-entrant: $(cat reent.txt)"
+for p in 10 50 90; do
+	z=$(awk -v p=$p 'BEGIN { printf "%.10g", -0.7 + 0.007 * p }')
+	check reent.txt "$z" "$(awk -v p=$p 'BEGIN { print 2 * (0.6 - 0.3 * p / 100) }')"
+done
+close "$(figure reent.txt swa)" "$(awk -v pi=$PI 'BEGIN { print 90 + atan2(0.3, 0.7) * 180 / pi }')" 0.3 "re-entrant swa"
 
 # a hole that stops at z = -0.4: cd 0 below, not cleared, swa "-"
 synth -v kind=rev -v prof="0 -0.4 0.2 -0.4 0.5 0 3 0" -v seed=5 >shallow.plot

@@ -5,6 +5,10 @@
 #     resting on it edge-on and one sharing its vertex (0: accepted);
 #   - etch: two spheres grown from seeds until they overlap (thesis Figure
 #     8.13), without -deloop (loops: refused) and with it (accepted).
+# And a gap is reported: a flat sheet of 4 x 4 squares of 0.5 um with one
+# triangle left out has 0.5 + 0.5 + 0.5 sqrt(2) = 1.707 um of open
+# border inside the box (a warning; the sheet's edges on the box's faces
+# do not count), the whole sheet none.
 . "$TOP/tests/lib/common.sh"
 awk -f "$TOP/tests/measure/synth.awk" -v kind=ext -v prof="-1 -0.35 1 -0.35" -v M=2 \
 	-v box="-1 1 -1 1 -0.7 0" >sheet.plot
@@ -24,6 +28,21 @@ grep -q -- "-force" err.txt || fail "pierced: the message does not name -force"
 measure -force -at -0.2 -line 0 0 x pierced.plot >f.txt || fail "-force did not measure"
 measure -at -0.2 -line 0 0 x resting.plot >r.txt || fail "an edge resting on the sheet counted as a crossing"
 measure -at -0.2 -line 0 0 x corner.plot >c.txt || fail "a triangle sharing a vertex counted as a crossing"
+
+# sheet SKIP: the 4 x 4 sheet at z = -0.35 without triangle SKIP (0: all)
+sheet4() {
+	awk -v skip="$1" 'BEGIN { print "-1 1 -1 1 -0.7 0"; print skip ? 31 : 32
+		for (i = 0; i < 4; i++) for (j = 0; j < 4; j++) {
+			x0 = -1 + i / 2; x1 = -1 + (i + 1) / 2; y0 = -1 + j / 2; y1 = -1 + (j + 1) / 2
+			n++; if (n != skip) printf "4\n%g %g -0.35\n%g %g -0.35\n%g %g -0.35\n%g %g -0.35\n", x0, y0, x1, y0, x1, y1, x0, y0
+			n++; if (n != skip) printf "4\n%g %g -0.35\n%g %g -0.35\n%g %g -0.35\n%g %g -0.35\n", x0, y0, x1, y1, x0, y1, x0, y0 } }'
+}
+sheet4 0 >whole.plot
+sheet4 11 >gap.plot
+measure -at -0.5 -line 0 0 x whole.plot >/dev/null 2>err.txt || fail "measure whole sheet"
+! grep -q "open border" err.txt || fail "the whole sheet has an open border: $(cat err.txt)"
+measure -at -0.5 -line 0.9 0.9 x gap.plot >/dev/null 2>err.txt || fail "measure the sheet with a gap"
+grep -q "the surface has 1.71 um of open border" err.txt || fail "gap: $(cat err.txt)"
 
 mkrate=$BUILD/tests/lib/mkrate
 "$mkrate" -o two.bin 31 41 31 -1.5 1.5 -1.5 2.5 -1.5 1.5 1 || fail "mkrate"
