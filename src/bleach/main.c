@@ -190,15 +190,14 @@ int main(int argc, char **argv)
 		progress("image stack of %d planes through %g um, %dx%d, from %s, largest "
 			 "dose %g mJ/cm2", st->n, st->thick, c->nx, c->ny, o.contour, dmax);
 	else
-	progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
-		 c->nx, c->ny, o.contour, dmax);
+		progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
+			 c->nx, c->ny, o.contour, dmax);
 
 	struct exposure *e = &held.e;
-	if (exposure_init(e, &in, nz, dmax, 1.0) != 0)
-	{
+	if (exposure_init(e, &in, nz, dmax, 1.0) != 0) {
 		if (o.dose)
-			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure steps",
-			    in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
+			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure "
+			    "steps", in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
 		die("%s:%ld: dose %g mJ/cm2 with C = %g cm2/mJ needs more than %g exposure steps",
 		    o.input, in.line_dose, in.dose, in.C, EXPOSE_MAX_STEPS);
 	}
@@ -214,14 +213,15 @@ int main(int argc, char **argv)
 	}
 
 	double *col = xreallocarray(NULL, (size_t)nz, sizeof *col);
-	if (st->is_stack)
+	if (st->is_stack) {
 		stack_expose(st, &in, e, t, I, ncol, nz, M);
-	else
-	for (size_t q = 0; q < ncol; q++) {
-		dose_table_eval(t, dose[q], col);
-		/* node j is at depth j dz; the rate file's k = 0 is the bottom */
-		for (int k = 0; k < nz; k++)
-			M[(size_t)k * ncol + q] = col[nz - 1 - k];
+	} else {
+		for (size_t q = 0; q < ncol; q++) {
+			dose_table_eval(t, dose[q], col);
+			/* node j is at depth j dz; the rate file's k = 0 is the bottom */
+			for (int k = 0; k < nz; k++)
+				M[(size_t)k * ncol + q] = col[nz - 1 - k];
+		}
 	}
 	if (in.bake == BAKE_3D && in.diffusion > 0)
 		bake_xy(M, nx, ny, nz, (c->xmax - c->xmin) / (nx - 1),
