@@ -276,15 +276,14 @@ int main(int argc, char **argv)
 		progress("image stack of %d planes through %g um, %dx%d, from %s, largest "
 			 "dose %g mJ/cm2", st->n, st->thick, c->nx, c->ny, o.contour, dmax);
 	else
-	progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
-		 c->nx, c->ny, o.contour, dmax);
+		progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
+			 c->nx, c->ny, o.contour, dmax);
 
 	struct exposure *e = &held.e;
-	if (exposure_init(e, &in, nz, dmax, 1.0) != 0)
-	{
+	if (exposure_init(e, &in, nz, dmax, 1.0) != 0) {
 		if (o.dose)
-			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure steps",
-			    in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
+			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure "
+			    "steps", in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
 		die("%s:%ld: dose %g mJ/cm2 with C = %g cm2/mJ needs more than %g exposure steps",
 		    o.input, in.line_dose, in.dose, in.C, EXPOSE_MAX_STEPS);
 	}
