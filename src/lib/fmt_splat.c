@@ -45,44 +45,8 @@ static void want(struct lex *lx, const char *kw, int n, int lo, int hi, const ch
 		lex_error(lx, "%s: expected \"%s\"", kw, form);
 }
 
-static void add_aberr(struct splat_input *in, size_t *cap, enum splat_aberr_kind k,
-		      double w, double hx, double hy, int z, long line)
-{
-	xgrow(&in->aberr, cap, (size_t)in->naberr + 1, sizeof *in->aberr);
-	struct splat_aberr *a = &in->aberr[in->naberr++];
-	a->kind = k;
-	a->w = w;
-	a->hx = hx;
-	a->hy = hy;
-	a->zernike = z;
-	a->line = line;
-}
-
-/* "w field hx hy" of the field-dependent Seidel terms. */
-static void field_term(struct lex *lx, struct splat_input *in, size_t *cap,
-		       enum splat_aberr_kind k, char **tok, int n)
-{
-	if (n != 5 || strcasecmp(tok[2], "field") != 0)
-		lex_error(lx, "%s: expected \"%s w field hx hy\" (w in waves, field "
-			  "point as a fraction of the field radius)", tok[0], tok[0]);
-	double w = number(lx, tok[0], "the aberration in waves", tok[1]);
-	double hx = number(lx, tok[0], "field hx", tok[3]);
-	double hy = number(lx, tok[0], "field hy", tok[4]);
-	if (hypot(hx, hy) > 1 + 1e-12)
-		lex_error(lx, "%s: field point (%g, %g) is outside the field radius 1",
-			  tok[0], hx, hy);
-	add_aberr(in, cap, k, w, hx, hy, 0, lex_lineno(lx));
-}
-
-/* "T PHASE" pair: amplitude transmission 0..1 and phase in degrees. */
 static void trans_phase(struct lex *lx, const char *kw, const char *ts, const char *ps,
-			double *t, double *ph)
-{
-	*t = number(lx, kw, "an amplitude transmission", ts);
-	if (*t < 0 || *t > 1)
-		lex_error(lx, "%s: amplitude transmission %g is outside [0, 1]", kw, *t);
-	*ph = number(lx, kw, "a phase in degrees", ps);
-}
+			double *t, double *ph);
 
 /* ---- polygon, gds, clip and window auto (the layout statements) ---- */
 
@@ -277,6 +241,45 @@ static void finish_layers(struct lex *lx, struct splat_input *in)
 		poly_set_free(&l->shapes);
 		l->shapes = c;
 	}
+}
+
+static void add_aberr(struct splat_input *in, size_t *cap, enum splat_aberr_kind k,
+		      double w, double hx, double hy, int z, long line)
+{
+	xgrow(&in->aberr, cap, (size_t)in->naberr + 1, sizeof *in->aberr);
+	struct splat_aberr *a = &in->aberr[in->naberr++];
+	a->kind = k;
+	a->w = w;
+	a->hx = hx;
+	a->hy = hy;
+	a->zernike = z;
+	a->line = line;
+}
+
+/* "w field hx hy" of the field-dependent Seidel terms. */
+static void field_term(struct lex *lx, struct splat_input *in, size_t *cap,
+		       enum splat_aberr_kind k, char **tok, int n)
+{
+	if (n != 5 || strcasecmp(tok[2], "field") != 0)
+		lex_error(lx, "%s: expected \"%s w field hx hy\" (w in waves, field "
+			  "point as a fraction of the field radius)", tok[0], tok[0]);
+	double w = number(lx, tok[0], "the aberration in waves", tok[1]);
+	double hx = number(lx, tok[0], "field hx", tok[3]);
+	double hy = number(lx, tok[0], "field hy", tok[4]);
+	if (hypot(hx, hy) > 1 + 1e-12)
+		lex_error(lx, "%s: field point (%g, %g) is outside the field radius 1",
+			  tok[0], hx, hy);
+	add_aberr(in, cap, k, w, hx, hy, 0, lex_lineno(lx));
+}
+
+/* "T PHASE" pair: amplitude transmission 0..1 and phase in degrees. */
+static void trans_phase(struct lex *lx, const char *kw, const char *ts, const char *ps,
+			double *t, double *ph)
+{
+	*t = number(lx, kw, "an amplitude transmission", ts);
+	if (*t < 0 || *t > 1)
+		lex_error(lx, "%s: amplitude transmission %g is outside [0, 1]", kw, *t);
+	*ph = number(lx, kw, "a phase in degrees", ps);
 }
 
 struct splat_input *fmt_splat_read(const char *path)
@@ -475,11 +478,12 @@ struct splat_input *fmt_splat_read(const char *path)
 		}
 	}
 
+	/* the layout statements need the whole file (window auto, any order) */
+	if (have_window && (in->mask.nlayers || in->window_auto))
+		finish_layers(lx, in);
 	/* whole-file checks */
 	if (!have_window)
 		lex_error(lx, "no window statement (the simulation cell is required)");
-	if (in->mask.nlayers || in->window_auto)
-		finish_layers(lx, in);
 	const struct splat_mask *m = &in->mask;
 	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
 	double sy = WINDOW_SLACK * (m->ymax - m->ymin);

@@ -111,6 +111,9 @@ struct splat_input {
 	struct splat_aberr *aberr;      /* in file order; terms add up */
 
 	struct splat_mask mask;
+	int clip;                       /* clip on: polygons may cross the window */
+	int window_auto;                /* window auto: from the gds shapes' bounding box */
+	double margin;                  /* window auto margin, micrometres (-1: 2 lambda/NA) */
 
 	/* output */
 	int nx, ny;                     /* grid points, ends included (default 51x51) */
@@ -118,11 +121,6 @@ struct splat_input {
 	int contour_set;                /* 1 if the file named it */
 	int ncutlines;
 	struct splat_cutline *cutlines;
-
-	/* polygon and layout statements */
-	int clip;                       /* clip on: polygons may cross the window */
-	int window_auto;                /* window auto: from the gds shapes' bounding box */
-	double margin;                  /* window auto margin, micrometres (-1: 2 lambda/NA) */
 };
 
 /* Reads and checks the whole file; dies "prog: file:line: ..." on any
