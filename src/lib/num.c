@@ -23,7 +23,7 @@
  * a few units of 2^-64 of a decision threshold (an exact or near tie, a
  * decimal on the edge of the interval) is not trusted: those, subnormals,
  * infinities and NaNs go to num_fmt_ref.  That happens for numbers with
- * exactly 18 significant digits ending in 5 and the like; tests/lib/num.c
+ * exactly 18 significant digits ending in 5 and the like; tests/formats/num.c
  * compares the two over millions of doubles.
  */
 #include "num.h"
