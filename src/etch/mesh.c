@@ -507,56 +507,82 @@ void mesh_kill_triangle(struct mesh *m, int t)
 	}
 }
 
+/* x renumbered: slots below d (the first dead one) keep their number */
+static inline int renum(int x, size_t d, const int *map)
+{
+	return (size_t)x < d ? x : map[x];
+}
+
 void mesh_compact(struct mesh *m)
 {
 	/* nothing died since the last compaction (most steps of a smooth
 	 * advance): renumbering would be the identity, so skip the rewrite */
 	if (m->live_node == m->nnode && m->live_seg == m->nseg && m->live_tri == m->ntri)
 		return;
+	/* Below the first dead slot of an array nothing moves and no number
+	 * changes, so only the rest is renumbered and moved, and references
+	 * into an array with no dead slot are left alone. */
+	size_t dn = 0, ds = 0, dt = 0;
+	while (dn < m->nnode && m->node[dn].alive)
+		dn++;
+	while (ds < m->nseg && m->seg[ds].alive)
+		ds++;
+	while (dt < m->ntri && m->tri[dt].alive)
+		dt++;
 	int *nmap = xreallocarray(NULL, m->nnode + 1, sizeof *nmap);
 	int *smap = xreallocarray(NULL, m->nseg + 1, sizeof *smap);
 	int *tmap = xreallocarray(NULL, m->ntri + 1, sizeof *tmap);
-	size_t k = 0;
-	for (size_t i = 0; i < m->nnode; i++)
+	size_t k = dn;
+	for (size_t i = dn; i < m->nnode; i++)
 		nmap[i] = m->node[i].alive ? (int)k++ : -1;
-	k = 0;
-	for (size_t i = 0; i < m->nseg; i++)
+	k = ds;
+	for (size_t i = ds; i < m->nseg; i++)
 		smap[i] = m->seg[i].alive ? (int)k++ : -1;
-	k = 0;
-	for (size_t i = 0; i < m->ntri; i++)
+	k = dt;
+	for (size_t i = dt; i < m->ntri; i++)
 		tmap[i] = m->tri[i].alive ? (int)k++ : -1;
-	k = 0;
+	int segs_moved = ds < m->nseg, nodes_moved = dn < m->nnode, tris_moved = dt < m->ntri;
+
+	k = dn;
 	for (size_t i = 0; i < m->nnode; i++) {
-		if (!m->node[i].alive)
+		struct node *nd = &m->node[i];
+		if (!nd->alive)
 			continue;
-		struct node nd = m->node[i];
-		for (int j = 0; j < nd.nseg; j++)
-			nd.seg[j] = smap[nd.seg[j]];
-		m->node[k++] = nd;
+		if (segs_moved)
+			for (int j = 0; j < nd->nseg; j++)
+				nd->seg[j] = renum(nd->seg[j], ds, smap);
+		if (i >= dn)
+			m->node[k++] = *nd;
 	}
 	m->nnode = k;
-	k = 0;
+	k = ds;
 	for (size_t i = 0; i < m->nseg; i++) {
-		if (!m->seg[i].alive)
+		struct segment *sg = &m->seg[i];
+		if (!sg->alive)
 			continue;
-		struct segment sg = m->seg[i];
 		for (int j = 0; j < 2; j++) {
-			sg.n[j] = nmap[sg.n[j]];
-			sg.t[j] = sg.t[j] < 0 ? -1 : tmap[sg.t[j]];
+			if (nodes_moved)
+				sg->n[j] = renum(sg->n[j], dn, nmap);
+			if (tris_moved && sg->t[j] >= 0)
+				sg->t[j] = renum(sg->t[j], dt, tmap);
 		}
-		m->seg[k++] = sg;
+		if (i >= ds)
+			m->seg[k++] = *sg;
 	}
 	m->nseg = k;
-	k = 0;
+	k = dt;
 	for (size_t i = 0; i < m->ntri; i++) {
-		if (!m->tri[i].alive)
+		struct triangle *tr = &m->tri[i];
+		if (!tr->alive)
 			continue;
-		struct triangle tr = m->tri[i];
 		for (int j = 0; j < 3; j++) {
-			tr.n[j] = nmap[tr.n[j]];
-			tr.s[j] = smap[tr.s[j]];
+			if (nodes_moved)
+				tr->n[j] = renum(tr->n[j], dn, nmap);
+			if (segs_moved)
+				tr->s[j] = renum(tr->s[j], ds, smap);
 		}
-		m->tri[k++] = tr;
+		if (i >= dt)
+			m->tri[k++] = *tr;
 	}
 	m->ntri = k;
 	free(nmap);

@@ -147,8 +147,7 @@ static void format_curves(void *arg, size_t lo, size_t hi, int range)
 		xgrow(s, cap, *len + most, 1);
 		*len += (size_t)sprintf(*s + *len, "%d\n", j->npts);
 		for (int v = 0; v < nv; v++) {
-			num_fmt(*s + *len, p[v]);
-			*len += strlen(*s + *len);
+			*len = (size_t)(num_put(*s + *len, p[v]) - *s);
 			(*s)[(*len)++] = (v + 1) % j->dim ? ' ' : '\n';
 		}
 	}

@@ -62,7 +62,8 @@ struct ratefile *fmt_rate_read(const char *path);
 /* The same, keeping only the rate (array 0) and the arrays named in want
  * (NULL-terminated; NULL keeps all), in file order.  A binary file on disk
  * is streamed, so memory is the arrays kept, never a copy of the file;
- * the others are still read for the CRC.  Same errors as fmt_rate_read. */
+ * the others are still read for the CRC, but their values are not
+ * checked.  Otherwise the same errors as fmt_rate_read. */
 struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want);
 void fmt_rate_write(const char *path, const struct ratefile *r, int ascii);
 void fmt_rate_free(struct ratefile *r);

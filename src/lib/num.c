@@ -23,7 +23,7 @@
  * a few units of 2^-64 of a decision threshold (an exact or near tie, a
  * decimal on the edge of the interval) is not trusted: those, subnormals,
  * infinities and NaNs go to num_fmt_ref.  That happens for numbers with
- * exactly 18 significant digits ending in 5 and the like; tests/lib/num.c
+ * exactly 18 significant digits ending in 5 and the like; tests/formats/num.c
  * compares the two over millions of doubles.
  */
 #include "num.h"
@@ -169,7 +169,7 @@ static char *fmt_g(char *buf, int neg, uint64_t q, int prec, int x)
 		p += n;
 	}
 	*p = '\0';
-	return buf;
+	return p;
 }
 
 /* F = I + f / 2^64 rounded to prec digits, I having nd digits: the
@@ -197,7 +197,13 @@ static int round_to(uint64_t i, uint64_t f, int nd, int k, int prec,
 	return up;
 }
 
-char *num_fmt(char *buf, double v)
+static char *ref_end(char *buf, double v)
+{
+	num_fmt_ref(buf, v);
+	return buf + strlen(buf);
+}
+
+char *num_put(char *buf, double v)
 {
 	uint64_t bits;
 	memcpy(&bits, &v, sizeof bits);
@@ -205,11 +211,12 @@ char *num_fmt(char *buf, double v)
 	int be = (int)(bits >> 52 & 0x7ff);
 	uint64_t m = bits & ((UINT64_C(1) << 52) - 1);
 	if (be == 0 && m == 0) {
-		strcpy(buf, "0");
-		return buf;
+		buf[0] = '0';
+		buf[1] = '\0';
+		return buf + 1;
 	}
 	if (be == 0 || be == 0x7ff)
-		return num_fmt_ref(buf, v);
+		return ref_end(buf, v);
 	m |= UINT64_C(1) << 52;
 	int e = be - 1075;                      /* v = m * 2^e */
 	int k = 17 - floor_log10_pow2(be - 1023);
@@ -226,7 +233,7 @@ char *num_fmt(char *buf, double v)
 	u128 rem;
 	int up = round_to(ip, fp, nd, k, 15, &q, &x, &rem);
 	if (up < 0)
-		return num_fmt_ref(buf, v);
+		return ref_end(buf, v);
 	/* does the 15-digit decimal lie in v's rounding interval? */
 	u128 dist = up ? ((u128)pow10_u64[nd - 15] << 64) - rem : rem;
 	u128 p = (u128)num_pow10[t].hi << 64 | num_pow10[t].lo;
@@ -234,36 +241,44 @@ char *num_fmt(char *buf, double v)
 	u128 halfw = p >> (j + 1 + narrow);
 	u128 gap = dist > halfw ? dist - halfw : halfw - dist;
 	if (gap < EDGE_MARGIN)
-		return num_fmt_ref(buf, v);
+		return ref_end(buf, v);
 	if (dist < halfw)
 		return fmt_g(buf, neg, q, 15, x);
 	if (round_to(ip, fp, nd, k, 17, &q, &x, &rem) < 0)
-		return num_fmt_ref(buf, v);
+		return ref_end(buf, v);
 	return fmt_g(buf, neg, q, 17, x);
 }
 
 #else /* no 128-bit integers: the reference is the printer */
 
-char *num_fmt(char *buf, double v)
+char *num_put(char *buf, double v)
 {
-	return num_fmt_ref(buf, v);
+	num_fmt_ref(buf, v);
+	return buf + strlen(buf);
 }
 
 #endif
 
+char *num_fmt(char *buf, double v)
+{
+	num_put(buf, v);
+	return buf;
+}
+
 void num_print(FILE *f, double v)
 {
 	char buf[NUM_BUFSZ];
-	fputs(num_fmt(buf, v), f);
+	fwrite(buf, 1, (size_t)(num_put(buf, v) - buf), f);
 }
 
 void num_print_row(FILE *f, const double *v, int n)
 {
-	char buf[NUM_BUFSZ];
+	char buf[NUM_BUFSZ + 1];
 	for (int i = 0; i < n; i++) {
-		if (i)
-			fputc(' ', f);
-		fputs(num_fmt(buf, v[i]), f);
+		char *e = num_put(buf, v[i]);
+		*e++ = i + 1 < n ? ' ' : '\n';
+		fwrite(buf, 1, (size_t)(e - buf), f);
 	}
-	fputc('\n', f);
+	if (n <= 0)
+		fputc('\n', f);
 }

@@ -23,6 +23,8 @@ int num_parse(const char *s, double *out);
 int num_parse_count(const char *s, long min, long max, long *out);
 /* Formats v into buf (NUM_BUFSZ bytes); returns buf. */
 char *num_fmt(char *buf, double v);
+/* The same, returning the end of the text (its NUL). */
+char *num_put(char *buf, double v);
 /* The same by printf("%.15g"), strtod and printf("%.17g"): the definition
  * of the output, about ten times slower. */
 char *num_fmt_ref(char *buf, double v);

@@ -14,6 +14,7 @@
 #include "util.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -28,17 +29,15 @@ struct scan_job {
 	struct scan *w;
 };
 
-/* Rates of planes [lo, hi) of points, and |grad R|^2 of the cells
- * between plane k and k + 1 for k in [lo, hi). */
+/* Rates of planes [lo, hi) of points, and the largest |grad R|^2 at
+ * their points. */
 static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 {
 	const struct scan_job *j = ctx;
 	const struct rfield *f = j->f;
 	struct scan *w = &j->w[worker];
 	const int *n = f->n;
-	/* with ny = 1 the y neighbour is the point itself (stride 0) */
-	size_t sx = 1, sy = n[1] > 1 ? (size_t)n[0] : 0, sz = (size_t)n[0] * n[1];
-	int ny = n[1] > 1 ? n[1] : 2;
+	size_t sx = 1, sy = (size_t)n[0], sz = (size_t)n[0] * n[1];
 	for (size_t i = lo * sz; i < hi * sz; i++) {
 		if (!(f->v[i] >= 0)) {
 			if (i < w->bad)
@@ -51,31 +50,49 @@ static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 		return;
 	/* |grad R| of a trilinear cell is largest at one of its corners
 	 * (|grad R|^2 is convex along each axis), where each component is
-	 * the difference along one cell edge: so this is max |grad R|
-	 * exactly, as thesis 7.4.1 wants it. */
-	for (size_t k = lo; k < hi && k + 1 < (size_t)n[2]; k++)
-		for (int jj = 0; jj + 1 < ny; jj++)
-			for (int i = 0; i + 1 < n[0]; i++) {
-				const double *v = f->v + k * sz + jj * sy + i;
-				/* the squared slopes along the cell's 12 edges,
-				 * each shared by the two corners it joins */
-				double ex[2][2], ey[2][2], ez[2][2];
-				for (size_t a = 0; a < 2; a++)
-					for (size_t b = 0; b < 2; b++) {
-						double gx = (v[sx + a * sy + b * sz] - v[a * sy + b * sz]) / f->h[0];
-						double gy = (v[a + sy + b * sz] - v[a + b * sz]) / f->h[1];
-						double gz = (v[a + b * sy + sz] - v[a + b * sy]) / f->h[2];
-						ex[a][b] = gx * gx;     /* at oy = a, oz = b */
-						ey[a][b] = gy * gy;     /* at ox = a, oz = b */
-						ez[a][b] = gz * gz;     /* at ox = a, oy = b */
-					}
-				for (int c = 0; c < 8; c++) {
-					size_t ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
-					double g2 = ex[oy][oz] + ey[ox][oz] + ez[ox][oy];
-					if (g2 > w->gmax2)
-						w->gmax2 = g2;
+	 * the difference along one cell edge: so max |grad R| is the largest
+	 * over grid points P and the cells around P of gx^2 + gy^2 + gz^2,
+	 * taken along that cell's edges from P, exactly as thesis 7.4.1 wants
+	 * it.  The cells around P use every combination of the edges on
+	 * either side of P along each axis, and rounded addition is monotone,
+	 * so that is (largest gx^2) + (largest gy^2) + (largest gz^2) at P:
+	 * the same number with six slopes a point instead of 24 a cell. */
+	for (size_t k = lo; k < hi; k++)
+		for (int jj = 0; jj < n[1]; jj++) {
+			const double *row = f->v + k * sz + (size_t)jj * sy;
+			double left = 0;        /* gx^2 of the edge ending at i */
+			for (int i = 0; i < n[0]; i++) {
+				const double *v = row + i;
+				double mx = left, my = 0, mz = 0;
+				if (i + 1 < n[0]) {
+					double g = (v[sx] - v[0]) / f->h[0];
+					left = g * g;
+					if (left > mx)
+						mx = left;
 				}
+				if (jj > 0) {
+					double g = (v[0] - v[-(ptrdiff_t)sy]) / f->h[1];
+					my = g * g;
+				}
+				if (jj + 1 < n[1]) {
+					double g = (v[sy] - v[0]) / f->h[1];
+					if (g * g > my)
+						my = g * g;
+				}
+				if (k > 0) {
+					double g = (v[0] - v[-(ptrdiff_t)sz]) / f->h[2];
+					mz = g * g;
+				}
+				if (k + 1 < (size_t)n[2]) {
+					double g = (v[sz] - v[0]) / f->h[2];
+					if (g * g > mz)
+						mz = g * g;
+				}
+				double g2 = mx + my + mz;
+				if (g2 > w->gmax2)
+					w->gmax2 = g2;
 			}
+		}
 }
 
 void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)

@@ -1,5 +1,5 @@
 /*
- * num.c - num_fmt (src/lib/num.c, the fast printer) against num_fmt_ref
+ * num.c - num_fmt/num_put (src/lib/num.c, the fast printer) against num_fmt_ref
  * (printf %.15g, strtod, printf %.17g: the definition of the output),
  * byte for byte, over:
  *  1. edge cases: 0, -0, 1, powers of two and ten and their neighbours,
@@ -27,9 +27,11 @@ static long nfail, nchecked;
 static void check(double v)
 {
 	char a[NUM_BUFSZ], b[NUM_BUFSZ];
-	num_fmt(a, v);
+	char *end = num_put(a, v);
 	num_fmt_ref(b, v);
 	nchecked++;
+	if (end != a + strlen(a) && nfail++ < 20)
+		fprintf(stderr, "num: %a: num_put returned the wrong end\n", v);
 	if (strcmp(a, b) != 0 && nfail++ < 20) {
 		uint64_t u;
 		memcpy(&u, &v, 8);
