@@ -27,7 +27,7 @@
  * triangles of equilateral S_ideal triangles covering the box's six
  * faces, no segment is cut (a rate spike would otherwise grow the mesh
  * exponentially: 2.7 GB in 75 s from a 2x2x2 rate file). */
-#define ETCH_MESH_FACTOR 10
+#define ETCH_MESH_FACTOR 4
 
 enum method { METHOD_RAY, METHOD_FMM, METHOD_CELL, METHOD_HUYGENS };
 

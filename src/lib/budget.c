@@ -52,8 +52,7 @@ void budget_check(const char *where, const char *what, double seconds, double by
 {
 	double mem = budget_memory();
 	/* NaN or infinite estimates are beyond any limit */
-	int over_t = !(seconds <= BUDGET_SECONDS), over_m = !(bytes <= mem);
-	if (!over_t && !over_m)
+	if (seconds <= BUDGET_SECONDS && bytes <= mem)
 		return;
 	char t[32], b[16], m[16];
 	seconds_text(t, seconds);
@@ -64,7 +63,7 @@ void budget_check(const char *where, const char *what, double seconds, double by
 		     where, what, t, b);
 		return;
 	}
-	die("%s: %s need about %s of work and %s of memory, beyond the limit of "
-	    "%s (1 h, %s on this machine): use -big or SAMPLE3D_BIG=1 to run it anyway",
-	    where, what, t, b, over_t ? "work" : "memory", m);
+	die("%s: %s need about %s of work and %s of memory, beyond the limits "
+	    "(1 h of work, the %s of memory of this machine): use -big or "
+	    "SAMPLE3D_BIG=1 to run it anyway", where, what, t, b, m);
 }
