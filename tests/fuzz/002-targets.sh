@@ -9,5 +9,5 @@ st=$?
 [ $st -ne 77 ] || skip "$(tail -n 1 out.txt)"
 [ $st -eq 0 ] || fail "fuzz targets: $(cat out.txt)"
 n=$(grep -c '^fuzz: .*: [0-9][0-9]* executions, exit 0$' out.txt)
-[ "$n" -eq 9 ] || fail "expected 9 readers run clean: $(cat out.txt)"
+[ "$n" -eq 10 ] || fail "expected 10 readers (gds included) run clean: $(cat out.txt)"
 exit 0

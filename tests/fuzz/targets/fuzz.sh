@@ -9,7 +9,9 @@
 # `make fuzz [FUZZ_SECONDS=60]` is "run build-fuzz $(FUZZ_SECONDS)".
 # The targets are tests/fuzz/targets/fuzz_reader.c compiled once per
 # reader with clang's -fsanitize=fuzzer,address,undefined and linked with
-# the library built the same way (in DIR/obj).  Seeds: tests/fuzz/corpus/
+# the library built the same way (in DIR/obj); the GDSII reader's target
+# is tests/fuzz/fuzz_gds.c (-DS3D_LIBFUZZER), which runs the reader's
+# non-exiting entry points in process.  Seeds: tests/fuzz/corpus/
 # READER/; the corpus a run grows: DIR/corpus/READER/; what it finds (a
 # crash, a sanitizer report, a hang over 10 s, more than 1 GB):
 # DIR/findings/READER-*.  Every finding, once fixed, goes to
@@ -20,7 +22,7 @@ dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 secs=${3:-60}
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 CLANG=${FUZZ_CC:-clang}
-READERS="splat bleach contour plot2d plot3d options template rate_ascii rate_binary"
+READERS="splat bleach contour plot2d plot3d options template rate_ascii rate_binary gds"
 FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11 -I$top/src/lib"
 
 command -v "$CLANG" >/dev/null 2>&1 || { echo "fuzz: $CLANG is not installed (apt-get install clang libclang-rt-14-dev)" >&2; exit 77; }
@@ -41,11 +43,18 @@ for src in "$top"/src/lib/*.c; do
 done | xargs -P 2 -I{} sh -c '{}' || { echo "fuzz: building the library failed" >&2; exit 1; }
 for r in $READERS; do
 	t=$dir/fuzz_$r
-	if [ ! -x "$t" ] || [ "$top/tests/fuzz/targets/fuzz_reader.c" -nt "$t" ] ||
+	src=$top/tests/fuzz/targets/fuzz_reader.c
+	[ "$r" = gds ] && src=$top/tests/fuzz/fuzz_gds.c
+	if [ ! -x "$t" ] || [ "$src" -nt "$t" ] ||
 	   [ -n "$(find "$dir/obj" -name '*.o' -newer "$t")" ]; then
-		$CLANG -fsanitize=fuzzer $FLAGS -DREADER_NAME="\"$r\"" -o "$t" \
-			-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free \
-			"$top/tests/fuzz/targets/fuzz_reader.c" $objs -lm || { echo "fuzz: linking $r failed" >&2; exit 1; }
+		if [ "$r" = gds ]; then
+			$CLANG -fsanitize=fuzzer $FLAGS -DS3D_LIBFUZZER -o "$t" "$src" $objs -lm ||
+				{ echo "fuzz: linking $r failed" >&2; exit 1; }
+		else
+			$CLANG -fsanitize=fuzzer $FLAGS -DREADER_NAME="\"$r\"" -o "$t" \
+				-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free \
+				"$src" $objs -lm || { echo "fuzz: linking $r failed" >&2; exit 1; }
+		fi
 	fi
 done
 [ "$mode" = build ] && exit 0
