@@ -46,6 +46,9 @@ struct fmm {
 	double bounds[6];       /* xmin xmax ymin ymax zmin zmax: the rate box */
 	double h[3];            /* node spacing per axis, um (0 if one node) */
 	double *t;              /* arrival times, s: n[0]*n[1]*n[2], x fastest */
+	double *rate;           /* the rate R per node, um/s (0 below the floor),
+				 * as the solve sampled it: the surface is placed
+				 * between nodes by it (iso_surface_speed) */
 	long accepted;          /* nodes reached (for reports) */
 	int refine[3];          /* the refinement the grid was solved with */
 };
@@ -54,6 +57,12 @@ struct fmm {
  * (NULL: no refinement) multiplies the cells of axis d (x, y, z).
  * Dies if the refined grid is too large (over 2^31 - 1 nodes). */
 struct fmm *fmm_solve(const struct ratefile *r, const int refine[3]);
+
+/* The same by the published scheme, the slowness taken at the node
+ * being updated (Sethian & Vladimirsky): second order where R is smooth
+ * on the grid scale, behind the front where it changes several-fold
+ * within a cell.  An independent reference for tests (refined). */
+struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3]);
 
 /* The same from point sources instead of the top: T = 0 at each of the
  * npts points p (x y z triples, clamped into the box), exact
@@ -66,9 +75,10 @@ void fmm_free(struct fmm *f);
 /* A refinement factor in z for resists with standing waves: the least
  * that brings the largest change of ln R between z neighbours under
  * FMM_AUTO_LNSTEP per refined cell, at most FMM_AUTO_MAX.  On the
- * thesis' contact (Olin Hunt 6512, no bake, 300 points) it gives 4, and
- * the front then lies within half a rate-grid cell of the converged one
- * along the column (plain: 7.7 cells off at worst). */
+ * thesis' contact (Olin Hunt 6512, no bake, 300 points) it gives 4.
+ * (With the slowness integrated over the cells, fmm.c, a column alone is
+ * exact on the plain grid; the refinement serves the fronts that cross
+ * the standing waves obliquely.)  etch -method fmm uses it by default. */
 #define FMM_AUTO_LNSTEP 0.1
 enum { FMM_AUTO_MAX = 16 };
 int fmm_auto_refine(const struct ratefile *r);
