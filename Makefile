@@ -44,7 +44,7 @@ LIB_SRC  := $(wildcard src/lib/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 LIB      := $(BUILD)/libsample3d.a
 
-DIR_PROGS  := $(foreach p,splat bleach etch,$(if $(wildcard src/$(p)/main.c),$(p)))
+DIR_PROGS  := $(foreach p,splat bleach etch measure,$(if $(wildcard src/$(p)/main.c),$(p)))
 PLOT_SRC   := $(wildcard src/plot/*.c)
 PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))

@@ -33,6 +33,8 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
               -rl L -linear -clip N -cut x|y V -method ray|fmm
               -etch "OPTS" passes any other etch options verbatim
+  -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
+              and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0"
   --help      this text
 U
 }
@@ -43,6 +45,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
 printtime="" plot="" hidden="" quiet="" etchopts=""
+measureopts=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help) usage; exit 0 ;;
@@ -69,6 +72,7 @@ while [ $# -gt 0 ]; do
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		etchopts="$etchopts -cut $2 $3"; shift 3 ;;
 	-etch) need_val "$@"; etchopts="$etchopts $2"; shift 2 ;;
+	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
 	*) bad "unknown option $1" ;;
 	esac
 done
@@ -77,6 +81,14 @@ done
 [ -z "$rate" ] || [ -z "$splat_in$contour$bleach_in" ] ||
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
+[ -z "$measureopts" ] || [ -n "$etchtime" ] || bad "-measure needs -et (it measures etch's result)"
+if [ -n "$measureopts" ]; then
+	# measure's options are checked before any stage runs: on an empty
+	# input it stops with 1 if they are good, 2 (and its usage) if not
+	# shellcheck disable=SC2086
+	measure $measureopts /dev/null >/dev/null 2>&1 || [ $? -ne 2 ] ||
+		{ measure $measureopts /dev/null >/dev/null; exit 2; }
+fi
 
 # splat: the contour-file is the one the input names (its "contour" line),
 # else splat's default splat.cont
@@ -105,6 +117,12 @@ say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> 
 # shellcheck disable=SC2086 # etchopts is a list of words on purpose
 etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts "$rate" ||
 	die "etch failed; stopping"
+
+if [ -n "$measureopts" ]; then
+	say "measure $measureopts curves.plot (the last set)"
+	# shellcheck disable=SC2086 # measureopts is a list of words on purpose
+	measure $measureopts curves.plot || die "measure failed; stopping"
+fi
 
 if [ -n "$plot" ]; then
 	say "pdraw $hidden curves.plot (interactive)"

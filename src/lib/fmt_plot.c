@@ -55,11 +55,10 @@ struct plot_file *fmt_plot_read(const char *path, int dim)
 			/* grow as points arrive, never by the claimed count */
 			size_t cap = 0, n = 0, want = (size_t)np * (size_t)dim;
 			double *p = NULL;
-			char what[64];
 			while (n < want) {
-				snprintf(what, sizeof what, "%s of point %zu of curve %ld",
-					 coord_names[n % (size_t)dim], n / (size_t)dim + 1, c + 1);
-				double v = lex_number(lx, what);
+				double v = lex_numberf(lx, "%s of point %zu of curve %ld",
+						       coord_names[n % (size_t)dim],
+						       n / (size_t)dim + 1, c + 1);
 				xgrow(&p, &cap, n + 1, sizeof *p);
 				p[n++] = v;
 			}

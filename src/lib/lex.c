@@ -9,6 +9,7 @@
 #include "util.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -212,19 +213,52 @@ static const char *shown(const char *t, char *out, size_t cap)
 	return out;
 }
 
-double lex_number(struct lex *lx, const char *what)
+/* lex_number and lex_numberf: the description of the field is only
+ * formatted when it goes into an error message. */
+static double number(struct lex *lx, const char *fmt, va_list ap)
 {
+	/* fast path: strtod in place, accepted only when the number ends at
+	 * a separator or the end of the input and is finite, exactly what
+	 * num_parse accepts of a token; anything else takes the token path,
+	 * which also makes the message */
+	skip_sep(lx);
+	if (lx->pos < lx->len) {
+		const char *p = lx->buf + lx->pos;
+		char *end;
+		double v = strtod(p, &end);
+		if (end > p && (end == lx->buf + lx->len || is_sep((unsigned char)*end)) &&
+		    isfinite(v)) {
+			lx->pos = (size_t)(end - lx->buf);
+			lx->line = lx->nextline;
+			return v;
+		}
+	}
 	const char *t = lex_token(lx);
+	double v;
+	if (t && num_parse(t, &v))
+		return v;
+	char what[160];
+	vsnprintf(what, sizeof what, fmt, ap);
 	if (!t) {
 		lx->line = lx->nextline;
 		lex_error(lx, "expected %s, found end of file", what);
 	}
-	double v;
-	if (!num_parse(t, &v)) {
-		char s[40];
-		lex_error(lx, "expected %s (a finite number), found \"%s\"",
-			  what, shown(t, s, sizeof s));
-	}
+	char s[40];
+	lex_error(lx, "expected %s (a finite number), found \"%s\"",
+		  what, shown(t, s, sizeof s));
+}
+
+double lex_number(struct lex *lx, const char *what)
+{
+	return lex_numberf(lx, "%s", what);
+}
+
+double lex_numberf(struct lex *lx, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	double v = number(lx, fmt, ap);
+	va_end(ap);
 	return v;
 }
 

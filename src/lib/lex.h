@@ -36,6 +36,10 @@ const char *lex_token(struct lex *lx);
 int lex_at_end(struct lex *lx);
 /* Next token as a finite number; dies "expected WHAT" otherwise. */
 double lex_number(struct lex *lx, const char *what);
+/* The same, WHAT given as a printf format that is only formatted for the
+ * error message (for readers of millions of numbers). */
+double lex_numberf(struct lex *lx, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
 /* Next token as a count in [min, max] ("4.0" accepted). */
 long lex_count(struct lex *lx, const char *what, long min, long max);
 

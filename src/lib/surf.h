@@ -1,0 +1,106 @@
+/*
+ * surf.h - a developed resist surface as a soup of triangles, and the
+ * geometry metrology needs from it: which side of the surface a point lies
+ * on, horizontal sections, vertical profiles, and crossings of the
+ * surface with itself.
+ *
+ * The surface is what etch(1) writes (plot3d(5), one set per print time):
+ * triangles with no required order, orientation or connectivity.  It
+ * covers the box in x-y, with the remaining resist below it and developed
+ * resist above.  A point is resist when a vertical ray from it upwards
+ * crosses the surface an odd number of times; that rule needs no
+ * connectivity and measures undercut and re-entrant walls right.
+ *
+ * Vertices "above" a height z0 are those with z >= z0 (everywhere: the
+ * section, the ray test), so a section through a vertex or along a flat
+ * face is consistent: the plane is taken infinitesimally below z0.
+ * Points on a shared edge are counted for exactly one of its triangles
+ * (half-open crossing rules, shared edges evaluated in one canonical
+ * order so both triangles compute the same bits).
+ */
+#ifndef S3D_SURF_H
+#define S3D_SURF_H
+
+#include <stddef.h>
+
+struct plot_set;
+
+struct surf {
+	size_t ntri;
+	double *v;          /* 9 numbers per triangle: x y z of each vertex */
+	size_t cap;
+	double box[6];      /* xmin xmax ymin ymax zmin zmax */
+	/* the x-y grid of the vertical-ray test (surf_index) */
+	int gnx, gny;
+	double gx0, gy0, ghx, ghy;
+	size_t *gstart;     /* gnx*gny + 1 offsets into gtri */
+	unsigned *gtri;
+};
+
+/* An empty surface in the box (6 numbers). */
+struct surf *surf_new(const double *box);
+void surf_add(struct surf *s, const double *tri9);
+/* The triangles of one set of a plot3d file: every curve must be a
+ * triangle (a closed curve of 4 points, the first repeated) and the
+ * bounds a box.  Otherwise returns NULL with what is wrong in err
+ * ("curve M: ..."), having allocated nothing. */
+struct surf *surf_from_plot_set(const struct plot_set *set, char *err, size_t errsz);
+void surf_free(struct surf *s);
+
+/* Builds the x-y grid used by surf_above (call after the last surf_add). */
+void surf_index(struct surf *s);
+/* The number of times the vertical ray from (x, y, z) upwards crosses the
+ * surface: odd means the point is in resist. */
+int surf_above(const struct surf *s, double x, double y, double z);
+
+/* Horizontal section: the segments where the plane z = z0 cuts the
+ * triangles (2D points x y, 4 numbers per segment). */
+struct surf_section {
+	double z;
+	size_t nseg;
+	double *seg;
+};
+void surf_section(const struct surf *s, double z, struct surf_section *sec);
+void surf_section_free(struct surf_section *sec);
+
+/* One stretch of a line in a section, between two crossings of the
+ * section's curves, and which side it is on. */
+struct surf_span {
+	double lo, hi;
+	int resist;         /* 1 resist, 0 developed */
+};
+/* The spans of the line in the section along axis (0: parallel to x,
+ * through y = c; 1: parallel to y, through x = c), from the box edge lo
+ * to hi, adjacent spans of one kind merged.  Returns the count; *spans is
+ * reallocated (capacity *cap). */
+size_t surf_line_spans(const struct surf *s, const struct surf_section *sec,
+		       int axis, double c, struct surf_span **spans, size_t *cap);
+/* The span of the line containing t (the coordinate along the line);
+ * t must lie in the box. */
+struct surf_span surf_span_at(const struct surf *s, const struct surf_section *sec,
+			      int axis, double c, double t);
+
+/* The developed region of the section that contains (x, y): its area
+ * (um2), from spans on lines parallel to x every h um (one of them
+ * through y), joined where they overlap on neighbouring lines.  0 if
+ * (x, y) is in resist.  *edge is set when the region touches the box
+ * edge (its area is cut there). */
+double surf_region_area(const struct surf *s, const struct surf_section *sec,
+			double x, double y, double h, int *edge);
+
+/* The highest point of the surface on the vertical plane through the
+ * line (axis, c as above), over the stretch lo..hi along it: the top of
+ * the resist there (the box bottom if nothing is found). */
+double surf_top_along(const struct surf *s, int axis, double c, double lo, double hi);
+
+/* Crossings: an edge of one triangle passing through the inside of another
+ * that shares no vertex with it (a loop left in the mesh).  Counts them,
+ * stopping at max; uses a uniform grid, time proportional to the size of
+ * the surface. */
+long surf_crossings(const struct surf *s, long max);
+
+/* The total length (um) of the edges that only one triangle has, other
+ * than on the faces of the box: the gaps of the surface. */
+double surf_open_border(const struct surf *s);
+
+#endif

@@ -1,0 +1,243 @@
+/*
+ * measure - CD metrology on a developed resist surface (a set of the
+ * curves.plot that etch writes): the CD of a hole, space or line at given
+ * heights, the sidewall angle, the resist loss and whether the feature
+ * clears.  See man/man1/measure.1.
+ */
+#include "args.h"
+#include "fmt_plot.h"
+#include "measure.h"
+#include "num.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage[] =
+	"usage: measure [-s set] (-at z1,z2,... | -rel p1,p2,...)\n"
+	"               (-hole X Y | -space X Y x|y | -line X Y x|y)\n"
+	"               [-o file] [-plot file] [-force] surface.plot\n"
+	"  -s set          the set (print time) to measure, from 1 in file order\n"
+	"                  (default: the last)\n"
+	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
+	"  -rel p1,p2,...  heights at p percent of the resist thickness above\n"
+	"                  the substrate: z = zmin + p/100 (zmax - zmin)\n"
+	"  -hole X Y       the developed opening containing (X, Y): cd is the\n"
+	"                  diameter of the circle of its area\n"
+	"  -space X Y x|y  the width of the developed interval through (X, Y)\n"
+	"                  along x (or y)\n"
+	"  -line X Y x|y   the width of the resist interval through (X, Y)\n"
+	"  -o file         write the table to file (default: standard output)\n"
+	"  -plot file      also write cd against z as a 2D plot file (drawplot)\n"
+	"  -force          measure a surface that crosses itself (loops left by\n"
+	"                  etch without -deloop)\n"
+	"  -h, --help      this text\n";
+
+/* A comma-separated list of finite numbers. */
+static int parse_list(const char *s, double **v, int *n)
+{
+	char *copy = xstrdup(s), *save = NULL;
+	size_t cap = 0;
+	int ok = 1;
+	*n = 0;
+	free(*v);
+	*v = NULL;
+	if (!*s || s[strlen(s) - 1] == ',' || *s == ',' || strstr(s, ",,"))
+		ok = 0;
+	for (char *t = strtok_r(copy, ",", &save); ok && t; t = strtok_r(NULL, ",", &save)) {
+		double x;
+		if (!num_parse(t, &x)) {
+			ok = 0;
+			break;
+		}
+		xgrow(v, &cap, (size_t)*n + 1, sizeof **v);
+		(*v)[(*n)++] = x;
+	}
+	free(copy);
+	return ok && *n > 0;
+}
+
+/* -hole X Y, -space X Y x|y, -line X Y x|y */
+static int parse_feature(struct args *a, struct options *o)
+{
+	static const char *names[] = {"-hole", "-space", "-line"};
+	const char *w = a->argv[a->i];
+	int k;
+	for (k = 0; k < 3; k++)
+		if (strcmp(w, names[k]) == 0)
+			break;
+	if (k == 3)
+		return 0;
+	int need = k == HOLE ? 2 : 3;
+	if (o->have_kind)
+		args_error(a, "give one of -hole, -space and -line, once");
+	o->have_kind = 1;
+	o->kind = (enum kind)k;
+	a->i++;
+	char **v = a->argv + a->i;
+	int left = a->argc - a->i;
+	if (left < need || !num_parse(v[0], &o->x) || !num_parse(v[1], &o->y) ||
+	    (need == 3 && strcmp(v[2], "x") != 0 && strcmp(v[2], "y") != 0)) {
+		args_error(a, need == 2 ? "option %s needs two numbers X Y"
+					: "option %s needs X Y and x or y", names[k]);
+		/* skip what looks like its values */
+		for (int j = 0; j < need && a->i < a->argc; j++) {
+			double t;
+			const char *s = a->argv[a->i];
+			if (s[0] == '-' && !num_parse(s, &t))
+				break;
+			a->i++;
+		}
+		return 1;
+	}
+	if (need == 3)
+		o->axis = v[2][0] == 'y';
+	a->i += need;
+	return 1;
+}
+
+static void parse_options(int argc, char **argv, struct options *o)
+{
+	struct args a;
+	args_init(&a, argc, argv);
+	args_usage(&a, usage, NULL, NULL);
+	memset(o, 0, sizeof *o);
+	o->out = "-";
+	const char *at = NULL, *rel = NULL;
+	const char **slots[] = {&o->input};
+	while (a.i < argc) {
+		args_help_exit(&a, 1);
+		if (a.i >= argc)
+			break;
+		if (args_int(&a, "-s", 1, PLOT_MAX_COUNT, &o->set) ||
+		    args_str(&a, "-at", &at) || args_str(&a, "-rel", &rel) ||
+		    args_str(&a, "-o", &o->out) || args_str(&a, "-plot", &o->plot) ||
+		    parse_feature(&a, o))
+			continue;
+		if (args_flag(&a, "-force")) {
+			o->force = 1;
+			continue;
+		}
+		args_operand(&a, slots, 1, "surface file");
+	}
+	if (at && rel)
+		args_error(&a, "give -at or -rel, not both");
+	else if (!at && !rel)
+		args_error(&a, "give the heights: -at z1,z2,... or -rel p1,p2,...");
+	else if (!parse_list(at ? at : rel, &o->h, &o->nh))
+		args_error(&a, "option %s: expected numbers separated by commas, found \"%.40s\"",
+			   at ? "-at" : "-rel", at ? at : rel);
+	o->rel = rel != NULL;
+	if (rel)
+		for (int i = 0; i < o->nh; i++)
+			if (o->h[i] < 0 || o->h[i] > 100) {
+				args_error(&a, "option -rel: %g is not a percentage from 0 to 100",
+					   o->h[i]);
+				break;
+			}
+	if (!o->have_kind)
+		args_error(&a, "give the feature: -hole X Y, -space X Y x|y or -line X Y x|y");
+	if (!o->input)
+		args_error(&a, "give the surface file (curves.plot of etch)");
+	args_done(&a, NULL);
+}
+
+/* Too many crossings to be worth counting further. */
+enum { CROSS_REPORT_MAX = 1000 };
+
+/* The set to measure, as a surface; dies (having freed what it holds,
+ * so that runs under the leak checker stay clean on errors) if there is
+ * no such set or it is not triangles in a box. */
+static struct surf *load(struct options *o, long *setno)
+{
+	struct plot_file *pf = fmt_plot_read(o->input, 3);
+	*setno = o->set ? o->set : pf->nsets;
+	if (*setno > pf->nsets) {
+		int n = pf->nsets;
+		fmt_plot_free(pf);
+		free(o->h);
+		die("%s: no set %ld: the file has %d", o->input, *setno, n);
+	}
+	char err[200];
+	struct surf *s = surf_from_plot_set(&pf->sets[*setno - 1], err, sizeof err);
+	fmt_plot_free(pf);
+	if (!s) {
+		free(o->h);
+		die("%s: set %ld: %s", o->input, *setno, err);
+	}
+	return s;
+}
+
+/* The heights in um into z; checks them, the point and (unless -force)
+ * the surface: what is wrong goes into err (empty if nothing). */
+static void check(const struct options *o, const struct surf *s, long setno, double *z,
+		  char *err, size_t errsz)
+{
+	const double *box = s->box;
+	err[0] = '\0';
+	if (o->x < box[0] || o->x > box[1] || o->y < box[2] || o->y > box[3]) {
+		snprintf(err, errsz, "the point (%g, %g) is outside the box x %g..%g, y %g..%g",
+			 o->x, o->y, box[0], box[1], box[2], box[3]);
+		return;
+	}
+	for (int i = 0; i < o->nh; i++) {
+		z[i] = o->rel ? box[4] + o->h[i] / 100 * (box[5] - box[4]) : o->h[i];
+		if (!o->rel && (z[i] < box[4] || z[i] > box[5])) {
+			snprintf(err, errsz, "height z = %g is outside the resist (z from %g to %g)",
+				 z[i], box[4], box[5]);
+			return;
+		}
+	}
+	if (o->force)
+		return;
+	long n = surf_crossings(s, CROSS_REPORT_MAX);
+	if (n > 0) {
+		snprintf(err, errsz, "set %ld: the surface crosses itself (%s%ld crossing%s: "
+			 "loops left where etch fronts met); rerun etch with -deloop, "
+			 "or give measure -force", setno,
+			 n >= CROSS_REPORT_MAX ? "at least " : "", n, n == 1 ? "" : "s");
+		return;
+	}
+	double open = surf_open_border(s);
+	if (open > 0)
+		warn("%s: set %ld: the surface has %.3g um of open border inside the box "
+		     "(gaps, as delooping can leave): a section through a gap is decided "
+		     "by the ray test alone", o->input, setno, open);
+}
+
+int main(int argc, char **argv)
+{
+	struct options o;
+	parse_options(argc, argv, &o);
+	long setno;
+	struct surf *s = load(&o, &setno);
+	double *z = xreallocarray(NULL, (size_t)o.nh, sizeof *z);
+	char err[200];
+	check(&o, s, setno, z, err, sizeof err);
+	if (err[0]) {
+		surf_free(s);
+		free(z);
+		free(o.h);
+		die("%s: %s", o.input, err);
+	}
+	surf_index(s);
+
+	struct result r;
+	measure_feature(s, &o, z, &r);
+	for (int i = 0; i < r.nrows; i++)
+		if (r.rows[i].edge) {
+			warn("%s: at z = %g the %s reaches the box edge: its cd is cut there",
+			     o.input, r.rows[i].z,
+			     o.kind == HOLE ? "hole" : o.kind == SPACE ? "space" : "line");
+			break;
+		}
+	report_table(&o, &r);
+	if (o.plot)
+		report_plot(&o, s, &r);
+	free(r.rows);
+	free(z);
+	free(o.h);
+	surf_free(s);
+	return 0;
+}

@@ -1,0 +1,57 @@
+/*
+ * measure.h - CD metrology on a developed resist surface: the options,
+ * one measured row per height, and the figures of the whole feature.
+ * See man/man1/measure.1.
+ */
+#ifndef S3D_MEASURE_H
+#define S3D_MEASURE_H
+
+#include "surf.h"
+
+enum kind { HOLE, SPACE, LINE };
+
+struct options {
+	long set;               /* 1-based; 0: the last */
+	double *h;              /* heights: um (-at) or percent (-rel) */
+	int nh;
+	int rel;                /* -rel given */
+	enum kind kind;
+	int have_kind;
+	double x, y;            /* the point in the feature */
+	int axis;               /* -space/-line: 0 along x, 1 along y */
+	const char *out;        /* table, "-" stdout */
+	const char *plot;       /* 2D plot file or NULL */
+	int force;              /* measure a surface with crossings */
+	const char *input;
+};
+
+/* One height. */
+struct row {
+	double z;               /* the height asked, um */
+	double cd;              /* um */
+	/* hole: area (um2), extents along x and y through the point;
+	 * space/line: the ends of the interval along the axis */
+	double a, b, c;
+	int edge;               /* the feature reaches the box edge here */
+};
+
+struct result {
+	struct row *rows;
+	int nrows;
+	int have_swa;           /* two heights or more */
+	int swa_known;          /* the feature is present at both ends */
+	double swa;             /* degrees */
+	double resist_loss;     /* um */
+	int cleared;
+};
+
+/* Measures the feature of o on surface s at every height (heights in um,
+ * in the box). */
+void measure_feature(const struct surf *s, const struct options *o,
+		     const double *z, struct result *r);
+
+/* The table on o->out, and the plot file if o->plot. */
+void report_table(const struct options *o, const struct result *r);
+void report_plot(const struct options *o, const struct surf *s, const struct result *r);
+
+#endif
