@@ -26,8 +26,9 @@
  * beside it in ln R (a factor 1.65 in rate): the scallops of an unbaked
  * resist swing by several units, a baked one's ripple by less. */
 #define ETCH_SW_SWING 0.5
-/* Segments per standing-wave period: 0.4 gives 0.052 um on the unbaked
- * contact (period 0.13 um), where 0.1 um lagged (standing_wave_period). */
+/* Segment length per standing-wave period: 0.4 of the unbaked contact's
+ * 0.13 um period makes 0.1 um grid cells two segments, 0.05 um, where
+ * 0.1 um lagged (standing_wave_period). */
 #define ETCH_SEG_PER_PERIOD 0.4
 
 /* The period (um) of the standing waves of the rates along z: in the
@@ -108,14 +109,20 @@ static double standing_wave_period(const struct rfield *f)
  * follow what the grid resolves.  On the thesis' contact without bake
  * (5 um box, 0.1 um grid, standing-wave period 0.13 um) box / 30 =
  * 0.167 um gave half the developed volume (0.68 against 1.40 um3
- * converged); 0.1 um gives 1.22.  And no longer than ETCH_SEG_PER_PERIOD
- * of the standing waves' period (above). */
+ * converged); 0.1 um gives 1.22.  Where the rates have standing waves
+ * (above), the spacing divided by the least whole number that brings it
+ * under ETCH_SEG_PER_PERIOD of their period. */
 double etch_default_seg(const struct rfield *f)
 {
 	double w = fmax(f->hi[0] - f->lo[0], f->hi[1] - f->lo[1]);
 	double h = fmax(f->h[0], f->h[1]);
-	double p = standing_wave_period(f), seg = fmin(w / ETCH_SEG_DIVISIONS, h);
-	return p > 0 ? fmin(seg, ETCH_SEG_PER_PERIOD * p) : seg;
+	double p = standing_wave_period(f);
+	/* a whole number of segments per grid cell, so that the deloop
+	 * classifier's grid (deloop_classifier: cells of two segments or
+	 * less) need not be refined laterally at 0.05 um on a 0.1 um grid */
+	if (p > 0 && h > ETCH_SEG_PER_PERIOD * p)
+		h /= ceil(h / (ETCH_SEG_PER_PERIOD * p));
+	return fmin(w / ETCH_SEG_DIVISIONS, h);
 }
 
 double etch_default_dt(const struct rfield *f, double seg, double et)
@@ -164,6 +171,14 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 {
 	double seg = o->seg > 0 ? o->seg : etch_default_seg(f);
 	st->seg = seg;
+	if (o->seg > 0 && o->deloop && !o->quiet) {
+		double p = standing_wave_period(f);
+		if (p > 0 && o->seg > ETCH_SEG_PER_PERIOD * p * (1 + 1e-9))
+			fprintf(stderr, "%s: warning: -seg %g is coarse for the standing waves "
+				"(period %.3g um): the front will lag them and -deloop may take it "
+				"for loops; the default is %g\n", util_prog(), o->seg, p,
+				etch_default_seg(f));
+	}
 	st->dt_grad = f->gmax > 0 ? 1 / f->gmax : 0;
 	st->dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
 	struct mesh *m = mesh_new();
