@@ -86,6 +86,9 @@ int fmm_auto_refine(const struct ratefile *r);
 /* T at any point, by trilinear interpolation; p is clamped into the box. */
 double fmm_time_at(const struct fmm *f, const double p[3]);
 
+/* The rate the solve used at any point, likewise (0 without f->rate). */
+double fmm_rate_at(const struct fmm *f, const double p[3]);
+
 /* Distance (um) from p to the developed surface at time t: a first-order
  * estimate |T(p) - t| / |grad T(p)|, refined by a bracketed search along
  * grad T for the crossing T = t; where p lies in developed resist above
@@ -100,7 +103,8 @@ void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t
 			double *median, double *p95);
 
 /* Emits the triangles of the developed surface at time t: the isosurface
- * T = t (marching tetrahedra, iso.h), normals towards undeveloped resist,
+ * T = t (marching tetrahedra, iso.h), placed between nodes by their rates
+ * (iso_surface_speed, with f->rate), normals towards undeveloped resist,
  * plus the substrate where the resist is developed through (where the
  * ray-string nodes stop, thesis 7.3), but not the box's top and side
  * faces.  For t <= 0 it is the flat resist top.  Returns the count. */

@@ -61,7 +61,7 @@ static double at(const struct grid *g, const int idx[3], double p[3], double *w)
  * gives s = (r^phi - 1)/(r - 1), r = wb/wa, phi the linear fraction.
  * It is computed from the end below the level, so the tetrahedra
  * sharing an edge, which may name its ends in either order, agree. */
-static double crossing(double fa, double wa, double fb, double wb, double level)
+double iso_crossing(double fa, double wa, double fb, double wb, double level)
 {
 	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
 		return (level - fa) / (fb - fa);
@@ -89,7 +89,7 @@ static void lerp(const double *a, double fa, double wa, const double *b, double 
 			out[d] = c[d];
 		return;
 	}
-	double t = crossing(fa, wa, fb, wb, level);
+	double t = iso_crossing(fa, wa, fb, wb, level);
 	for (int d = 0; d < 3; d++)
 		out[d] = a[d] + t * (b[d] - a[d]);
 }

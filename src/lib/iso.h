@@ -36,4 +36,9 @@ long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6]
 long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
 		       const double bounds[6], double level, int closed, iso_emit emit, void *ctx);
 
+/* The fraction of the way from a to b at which f = level on an edge
+ * whose ends have values fa, fb and speeds wa, wb, as iso_surface_speed
+ * places it (linear in f where a speed is not positive). */
+double iso_crossing(double fa, double wa, double fb, double wb, double level);
+
 #endif
