@@ -12,7 +12,7 @@
 # bake fmm_solve refined 4 x 4 x 1 (the published scheme needs z x4 there
 # too: 10 s; it gave fmm -0.014/0.055, ray -0.022/0.083).
 # Measured (mean, p95): with bake fmm -0.020 0.043, ray -deloop +0.008
-# 0.026; without bake fmm -0.022 0.069, ray -deloop -0.044 0.161.  Before
+# 0.026; without bake fmm -0.022 0.069, ray -deloop -0.036 0.137.  Before
 # issue 12 the fast-marching surface of the full example lay -0.176 (p95
 # 0.29) behind with bake, and the default run had no z refinement.
 . "$TOP/tests/lib/common.sh"
