@@ -20,8 +20,20 @@
  * sharp rate changes) the solution with fewer axes is kept: never below
  * the true upwind value, so the order of acceptance stays causal.
  *
- * The slowness 1/R is sampled once per node of the refined grid from the
- * rate grid by trilinear interpolation.
+ * The slowness.  A difference along an axis stands for the slowness
+ * over the cells it spans, not at the node: (T - T1)/h for the mean of
+ * 1/R over the cell, (3T - 4T1 + T2)/(2h) for 3/2 of it minus 1/2 of the
+ * next cell's.  Along a grid line the (trilinear) rate is linear, so the
+ * mean is (ln Ra - ln Rb)/(Ra - Rb) exactly; the axis' coefficient is
+ * scaled by (f/mean)^2, f the node's slowness, so that the quadratic
+ * keeps f on its right-hand side.  In one dimension the solve is then
+ * exact for the piecewise-linear rate, whatever its contrast; the
+ * published scheme (f at the node, fmm_solve_nodal) is second order
+ * only where R is smooth on the grid scale, and where the rate changes
+ * several-fold within a cell (a resist at the edge of the image) puts
+ * the front behind: on the baked contact of examples/contact at 60 s,
+ * 0.12 of an x-y cell on average (issue 12).  The slowness at the nodes
+ * of a refined grid comes from the rate grid by trilinear interpolation.
  */
 #include "fmm.h"
 #include "util.h"
@@ -56,6 +68,7 @@ struct solver {
 	double *t;
 	double *slow;           /* 1/R per node, s/um; INFINITY where R ~ 0 */
 	unsigned char *state;
+	int nodal;              /* fmm_solve_nodal: the node's own slowness */
 	int32_t *pos;           /* heap position of TRIAL nodes */
 	struct heap_ent *heap;
 	size_t nheap;
@@ -127,6 +140,20 @@ static size_t pop(struct solver *s)
 	return n;
 }
 
+/* The mean slowness over the cell between neighbouring nodes of
+ * slownesses sa and sb, where the rate is linear along the grid line:
+ * (1/h) int dx/R = (ln Ra - ln Rb)/(Ra - Rb).  INFINITY if either
+ * rate is zero (the resist top may be KNOWN at zero rate). */
+static double path_slowness(double sa, double sb)
+{
+	if (!(sa < INFINITY && sb < INFINITY))
+		return INFINITY;
+	double ra = 1 / sa, rb = 1 / sb, lr = log(ra / rb);
+	if (fabs(lr) < 1e-9)
+		return 0.5 * (sa + sb);
+	return lr / (ra - rb);
+}
+
 /* The upwind update of node n at grid position c (see the note above). */
 static double update(const struct solver *s, size_t n, const int c[3])
 {
@@ -136,6 +163,7 @@ static double update(const struct solver *s, size_t n, const int c[3])
 		ptrdiff_t st = s->stride[d];
 		int hi = s->n[d] - 1;
 		double t1 = INFINITY, t2 = INFINITY;
+		ptrdiff_t o = -st;      /* towards the upwind neighbour */
 		if (c[d] > 0 && s->state[n - st] == KNOWN) {
 			t1 = s->t[n - st];
 			if (c[d] > 1 && s->state[n - 2 * st] == KNOWN)
@@ -143,19 +171,28 @@ static double update(const struct solver *s, size_t n, const int c[3])
 		}
 		if (c[d] < hi && s->state[n + st] == KNOWN && s->t[n + st] < t1) {
 			t1 = s->t[n + st];
+			o = st;
 			t2 = c[d] < hi - 1 && s->state[n + 2 * st] == KNOWN ? s->t[n + 2 * st]
 									   : INFINITY;
 		}
 		if (t1 == INFINITY)
 			continue;
+		/* the slowness the difference stands for: the mean over the
+		 * cell (first order), or the second-order combination of the
+		 * two cells' means, in place of the node's own */
+		double f1 = path_slowness(s->slow[n], s->slow[n + o]), f = f1;
 		double aa, bb;
-		if (t2 <= t1) {
+		if (t2 <= t1 &&
+		    (f = 0.5 * (3 * f1 - path_slowness(s->slow[n + o], s->slow[n + 2 * o]))) > 0) {
 			aa = s->a2[d];
 			bb = (4 * t1 - t2) / 3;
 		} else {
 			aa = s->a1[d];
 			bb = t1;
+			f = f1;
 		}
+		if (f < INFINITY && !s->nodal)
+			aa *= (s->slow[n] / f) * (s->slow[n] / f);
 		/* insertion by b, so axes join in causal order */
 		int q = m++;
 		while (q > 0 && b[q - 1] > bb) {
@@ -331,16 +368,21 @@ static void march(struct fmm *f, struct solver *s)
 		coords(s, n, c);
 		relax(s, n, c);
 	}
-	free(s->slow);
+	/* the rates stay with the solution, for the surface (fmm_out.c) */
+	size_t total = (size_t)s->n[0] * (size_t)s->n[1] * (size_t)s->n[2];
+	for (size_t n = 0; n < total; n++)
+		s->slow[n] = s->slow[n] < INFINITY ? 1 / s->slow[n] : 0;
+	f->rate = s->slow;
 	free(s->state);
 	free(s->pos);
 	free(s->heap);
 }
 
-struct fmm *fmm_solve(const struct ratefile *r, const int refine[3])
+static struct fmm *solve_top(const struct ratefile *r, const int refine[3], int nodal)
 {
 	struct solver s;
 	struct fmm *f = setup(r, refine, &s);
+	s.nodal = nodal;
 	/* T = 0 on the resist top: the whole plane z = zmax is KNOWN */
 	size_t plane = (size_t)s.n[0] * (size_t)s.n[1];
 	size_t top = (size_t)(s.n[2] - 1) * plane;
@@ -358,11 +400,22 @@ struct fmm *fmm_solve(const struct ratefile *r, const int refine[3])
 	return f;
 }
 
+struct fmm *fmm_solve(const struct ratefile *r, const int refine[3])
+{
+	return solve_top(r, refine, 0);
+}
+
+struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3])
+{
+	return solve_top(r, refine, 1);
+}
+
 struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 			     const double *p, int npts)
 {
 	struct solver s;
 	struct fmm *f = setup(r, refine, &s);
+	s.nodal = 0;
 	for (int q = 0; q < npts; q++) {
 		double x[3];
 		int lo[3], hi[3];
@@ -416,5 +469,6 @@ void fmm_free(struct fmm *f)
 	if (!f)
 		return;
 	free(f->t);
+	free(f->rate);
 	free(f);
 }

@@ -46,6 +46,9 @@ struct fmm {
 	double bounds[6];       /* xmin xmax ymin ymax zmin zmax: the rate box */
 	double h[3];            /* node spacing per axis, um (0 if one node) */
 	double *t;              /* arrival times, s: n[0]*n[1]*n[2], x fastest */
+	double *rate;           /* the rate R per node, um/s (0 below the floor),
+				 * as the solve sampled it: the surface is placed
+				 * between nodes by it (iso_surface_speed) */
 	long accepted;          /* nodes reached (for reports) */
 	int refine[3];          /* the refinement the grid was solved with */
 };
@@ -54,6 +57,12 @@ struct fmm {
  * (NULL: no refinement) multiplies the cells of axis d (x, y, z).
  * Dies if the refined grid is too large (over 2^31 - 1 nodes). */
 struct fmm *fmm_solve(const struct ratefile *r, const int refine[3]);
+
+/* The same by the published scheme, the slowness taken at the node
+ * being updated (Sethian & Vladimirsky): second order where R is smooth
+ * on the grid scale, behind the front where it changes several-fold
+ * within a cell.  An independent reference for tests (refined). */
+struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3]);
 
 /* The same from point sources instead of the top: T = 0 at each of the
  * npts points p (x y z triples, clamped into the box), exact
@@ -66,15 +75,19 @@ void fmm_free(struct fmm *f);
 /* A refinement factor in z for resists with standing waves: the least
  * that brings the largest change of ln R between z neighbours under
  * FMM_AUTO_LNSTEP per refined cell, at most FMM_AUTO_MAX.  On the
- * thesis' contact (Olin Hunt 6512, no bake, 300 points) it gives 4, and
- * the front then lies within half a rate-grid cell of the converged one
- * along the column (plain: 7.7 cells off at worst). */
+ * thesis' contact (Olin Hunt 6512, no bake, 300 points) it gives 4.
+ * (With the slowness integrated over the cells, fmm.c, a column alone is
+ * exact on the plain grid; the refinement serves the fronts that cross
+ * the standing waves obliquely.)  etch -method fmm uses it by default. */
 #define FMM_AUTO_LNSTEP 0.1
 enum { FMM_AUTO_MAX = 16 };
 int fmm_auto_refine(const struct ratefile *r);
 
 /* T at any point, by trilinear interpolation; p is clamped into the box. */
 double fmm_time_at(const struct fmm *f, const double p[3]);
+
+/* The rate the solve used at any point, likewise (0 without f->rate). */
+double fmm_rate_at(const struct fmm *f, const double p[3]);
 
 /* Distance (um) from p to the developed surface at time t: a first-order
  * estimate |T(p) - t| / |grad T(p)|, refined by a bracketed search along
@@ -90,7 +103,8 @@ void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t
 			double *median, double *p95);
 
 /* Emits the triangles of the developed surface at time t: the isosurface
- * T = t (marching tetrahedra, iso.h), normals towards undeveloped resist,
+ * T = t (marching tetrahedra, iso.h), placed between nodes by their rates
+ * (iso_surface_speed, with f->rate), normals towards undeveloped resist,
  * plus the substrate where the resist is developed through (where the
  * ray-string nodes stop, thesis 7.3), but not the box's top and side
  * faces.  For t <= 0 it is the flat resist top.  Returns the count. */

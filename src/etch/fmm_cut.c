@@ -11,7 +11,8 @@
  * axes (trilinear, so linear between the two slabs around v) and
  * contoured by marching triangles, every cell split on its
  * (0,0)-(1,1) diagonal.  A crossing is named by the grid edge it lies on
- * and computed from that edge's two ends in a fixed order, so the
+ * and computed from that edge's two ends in a fixed order (placed by
+ * their rates as fmm_surface places its vertices, iso_crossing), so the
  * triangles on either side of an edge produce the same point bit for
  * bit and the pieces chain by name, not by comparing coordinates.  As in
  * fmm_surface, the substrate where T < t belongs to the profile: a
@@ -20,6 +21,7 @@
  * meets it.  Side walls and the top are not part of the profile.
  */
 #include "fmm.h"
+#include "iso.h"
 #include "util.h"
 
 #include <stdlib.h>
@@ -28,6 +30,7 @@ struct plane {
 	int nj, nk;             /* nodes along the other axis and along z, the
 				 * virtual substrate row included (row 0) */
 	double *v;              /* nj * nk values */
+	double *w;              /* their rates (0 on the virtual row) */
 	double *u, *z;          /* coordinates of columns and rows */
 	double level;
 };
@@ -52,8 +55,9 @@ static void edge_point(const struct plane *pl, size_t e, double p[2])
 {
 	int a[2], b[2];
 	edge_ends(pl, e, a, b);
-	double fa = val(pl, a[0], a[1]), fb = val(pl, b[0], b[1]);
-	double s = (pl->level - fa) / (fb - fa);
+	size_t ia = (size_t)a[1] * (size_t)pl->nj + (size_t)a[0];
+	size_t ib = (size_t)b[1] * (size_t)pl->nj + (size_t)b[0];
+	double s = iso_crossing(pl->v[ia], pl->w[ia], pl->v[ib], pl->w[ib], pl->level);
 	p[0] = pl->u[a[0]] + s * (pl->u[b[0]] - pl->u[a[0]]);
 	p[1] = pl->z[a[1]] + s * (pl->z[b[1]] - pl->z[a[1]]);
 }
@@ -122,6 +126,7 @@ void fmm_cut(const struct fmm *f, double t, int axis, double value,
 	pl.level = t;
 	size_t nn = (size_t)pl.nj * (size_t)pl.nk;
 	pl.v = xreallocarray(NULL, nn, sizeof *pl.v);
+	pl.w = xreallocarray(NULL, nn, sizeof *pl.w);
 	pl.u = xreallocarray(NULL, (size_t)pl.nj, sizeof *pl.u);
 	pl.z = xreallocarray(NULL, (size_t)pl.nk, sizeof *pl.z);
 	for (int j = 0; j < pl.nj; j++)
@@ -132,12 +137,14 @@ void fmm_cut(const struct fmm *f, double t, int axis, double value,
 		pl.z[k] = k == pl.nk - 1 ? f->bounds[5] : f->bounds[4] + (k - 1) * f->h[2];
 	for (int j = 0; j < pl.nj; j++) {
 		pl.v[j] = t + 1;    /* the virtual row: above the level */
+		pl.w[j] = 0;
 		for (int k = 1; k < pl.nk; k++) {
 			double p[3];
 			p[axis] = value;
 			p[other] = pl.u[j];
 			p[2] = pl.z[k];
 			pl.v[(size_t)k * (size_t)pl.nj + (size_t)j] = fmm_time_at(f, p);
+			pl.w[(size_t)k * (size_t)pl.nj + (size_t)j] = fmm_rate_at(f, p);
 		}
 	}
 	struct links l;
@@ -188,6 +195,7 @@ void fmm_cut(const struct fmm *f, double t, int axis, double value,
 	free(used);
 	free(l.to);
 	free(pl.v);
+	free(pl.w);
 	free(pl.u);
 	free(pl.z);
 }

@@ -86,7 +86,8 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx)
 	 * only guards against the rounding of a face coordinate */
 	for (int d = 0; d < 3; d++)
 		fl.tol[d] = 1e-6 * f->h[d];
-	iso_surface(f->t, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, filter_emit, &fl);
+	iso_surface_speed(f->t, f->rate, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, filter_emit,
+			  &fl);
 	return fl.count;
 }
 
@@ -117,12 +118,17 @@ static struct fmm *coarse_view(const struct fmm *f)
 		total *= (size_t)c->n[d];
 	}
 	c->t = xreallocarray(NULL, total, sizeof *c->t);
+	c->rate = f->rate ? xreallocarray(NULL, total, sizeof *c->rate) : NULL;
 	size_t q = 0;
 	for (size_t k = 0; k < (size_t)c->n[2]; k++)
 		for (size_t j = 0; j < (size_t)c->n[1]; j++)
-			for (size_t i = 0; i < (size_t)c->n[0]; i++)
-				c->t[q++] = f->t[(k * r[2] * (size_t)f->n[1] + j * r[1]) *
-						 (size_t)f->n[0] + i * r[0]];
+			for (size_t i = 0; i < (size_t)c->n[0]; i++, q++) {
+				size_t n = (k * r[2] * (size_t)f->n[1] + j * r[1]) * (size_t)f->n[0] +
+					   i * r[0];
+				c->t[q] = f->t[n];
+				if (c->rate)
+					c->rate[q] = f->rate[n];
+			}
 	return c;
 }
 
@@ -158,8 +164,7 @@ void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
 		}
 	}
 	free(tr.v);
-	free(f->t);
-	free(f);
+	fmm_free(f);
 	if (w3)
 		fmt_plot_close(w3);
 	if (w2)

@@ -26,7 +26,7 @@
  * resolution of it. */
 enum { BISECT_STEPS = 60, BRACKET_STEPS = 60 };
 
-double fmm_time_at(const struct fmm *f, const double p[3])
+static double trilinear(const struct fmm *f, const double *v, const double p[3])
 {
 	int lo[3];
 	double w[3];
@@ -53,9 +53,19 @@ double fmm_time_at(const struct fmm *f, const double p[3])
 			n += (size_t)(lo[d] + e) * (d == 0 ? 1 : d == 1 ? sy : sz);
 		}
 		if (wq > 0)
-			sum += wq * f->t[n];
+			sum += wq * v[n];
 	}
 	return sum;
+}
+
+double fmm_time_at(const struct fmm *f, const double p[3])
+{
+	return trilinear(f, f->t, p);
+}
+
+double fmm_rate_at(const struct fmm *f, const double p[3])
+{
+	return f->rate ? trilinear(f, f->rate, p) : 0;
 }
 
 /* grad T by central differences over half a cell, one-sided at the box */

@@ -33,7 +33,8 @@ static const char usage[] =
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
 	"                   at most S_ideal / max R)\n"
 	"  -seg length      ideal segment length S_ideal, um (default: box side / 30,\n"
-	"                   at most the rate grid's x-y spacing)\n"
+	"                   at most the rate grid's x-y spacing, divided to\n"
+	"                   under 0.4 of the standing waves' period)\n"
 	"  -smax r          cut segments longer than r S_ideal (default 1.2)\n"
 	"  -smin r          merge segments shorter than r S_ideal (default 0.2)\n"
 	"  -rl length       recursive length of vector checking (default 0.1)\n"
@@ -52,7 +53,7 @@ static const char usage[] =
 	"                   from the fast-marching surface at each print time\n"
 	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
 	"                   n times in z (or nx, ny, nz in x, y, z); auto picks z\n"
-	"                   from the standing waves (default 1: no refinement)\n"
+	"                   from the standing waves (the default)\n"
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
@@ -125,6 +126,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->out3d = "curves.plot";
 	const char *method = "ray", *cutaxis = NULL;
 	long threads = 0;
+	int refine_given = 0;
 	args_usage(&a, usage, NULL, NULL);
 	while (a.i < argc) {
 		const char *s = argv[a.i];
@@ -177,8 +179,10 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			else
 				args_error(&a, "more than %d -seed points", ETCH_MAX_SEEDS);
 		}
-		else if (strcmp(s, "-refine") == 0)
+		else if (strcmp(s, "-refine") == 0) {
 			parse_refine(&a, o);
+			refine_given = 1;
+		}
 		else if (strcmp(s, "-cut") == 0) {
 			if (a.i + 2 < argc && strcmp(argv[a.i + 2], "mid") == 0) {
 				o->cut_mid = 1;
@@ -224,6 +228,9 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		args_error(&a, "-method cell and huygens take no -xcheck, -deloop or -cut");
 	if (o->xcheck && o->method == METHOD_FMM)
 		args_error(&a, "-xcheck compares the ray-string run with fast marching: not with -method fmm");
+	/* fast marching by default resolves the standing waves in z */
+	if (o->method == METHOD_FMM && !refine_given)
+		o->refine_auto = 1;
 	if (cutaxis) {
 		if (strcmp(cutaxis, "x") == 0)
 			o->cut_axis = 0;

@@ -26,16 +26,106 @@
 #include <stdlib.h>
 #include <time.h>
 
+/* A maximum of the standing waves stands this far above the minima
+ * beside it in ln R (a factor 1.65 in rate): the scallops of an unbaked
+ * resist swing by several units, a baked one's ripple by less. */
+#define ETCH_SW_SWING 0.5
+/* Segment length per standing-wave period: 0.4 of the unbaked contact's
+ * 0.13 um period makes 0.1 um grid cells two segments, 0.05 um, where
+ * 0.1 um lagged (standing_wave_period). */
+#define ETCH_SEG_PER_PERIOD 0.4
+
+/* The period (um) of the standing waves of the rates along z: in the
+ * column where ln R swings most, the mean distance between successive
+ * maxima of R that stand more than ETCH_SW_SWING in ln R above the
+ * minima between them; 0 if there are fewer than two (a baked resist,
+ * a uniform one).  A mesh whose segments are longer than a fraction of
+ * it cannot follow the scallops: on the unbaked contact of
+ * examples/contact (period 0.13 um) at 60 s, 0.1 um segments leave the
+ * walls 0.1-0.2 um (up to two cells) inside the fast-marching ones along
+ * y = 0, and the deloop classifier then takes whole patches of that
+ * lagging front for loops (issue 12: the hole deleted below z =
+ * -0.136); 0.05 um segments put them within 0.03 um. */
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static double standing_wave_period(const struct rfield *f)
+{
+	size_t plane = (size_t)f->n[0] * (size_t)f->n[1], best = 0;
+	double swing = 0;
+	for (size_t q = 0; q < plane; q++) {
+		double lo = INFINITY, hi = -INFINITY;
+		for (int k = 0; k < f->n[2]; k++) {
+			double v = f->v[(size_t)k * plane + q];
+			if (v >= FMM_RATE_FLOOR) {
+				lo = fmin(lo, log(v));
+				hi = fmax(hi, log(v));
+			}
+		}
+		if (hi - lo > swing) {
+			swing = hi - lo;
+			best = q;
+		}
+	}
+	/* maxima separated by dips of more than ETCH_SW_SWING; the median
+	 * distance between successive ones (a dip too shallow merges two
+	 * periods into one) */
+	double *zmax = xreallocarray(NULL, (size_t)f->n[2] + 1, sizeof *zmax);
+	double top = -INFINITY, dip = INFINITY, last = 0;
+	int nmax = 0, rising = 1;
+	for (int k = 0; k < f->n[2]; k++) {
+		double v = f->v[(size_t)k * plane + best];
+		double l = v >= FMM_RATE_FLOOR ? log(v) : -INFINITY;
+		double z = f->lo[2] + k * f->h[2];
+		if (rising) {
+			if (l > top) {
+				top = l;
+				last = z;
+			} else if (top - l > ETCH_SW_SWING) {
+				zmax[nmax++] = last;
+				rising = 0;
+				dip = l;
+			}
+		} else if (l < dip) {
+			dip = l;
+		} else if (l - dip > ETCH_SW_SWING) {
+			rising = 1;
+			top = l;
+			last = z;
+		}
+	}
+	for (int i = 0; i + 1 < nmax; i++)
+		zmax[i] = zmax[i + 1] - zmax[i];
+	double period = 0;
+	if (nmax >= 2) {
+		qsort(zmax, (size_t)nmax - 1, sizeof *zmax, cmp_double);
+		period = zmax[(nmax - 1) / 2];
+	}
+	free(zmax);
+	return period;
+}
+
 /* The longer horizontal side / ETCH_SEG_DIVISIONS, but no longer than the
  * rate grid's horizontal spacing: a mesh coarser than the grid cannot
  * follow what the grid resolves.  On the thesis' contact without bake
  * (5 um box, 0.1 um grid, standing-wave period 0.13 um) box / 30 =
  * 0.167 um gave half the developed volume (0.68 against 1.40 um3
- * converged); 0.1 um gives 1.22. */
+ * converged); 0.1 um gives 1.22.  Where the rates have standing waves
+ * (above), the spacing divided by the least whole number that brings it
+ * under ETCH_SEG_PER_PERIOD of their period. */
 double etch_default_seg(const struct rfield *f)
 {
 	double w = fmax(f->hi[0] - f->lo[0], f->hi[1] - f->lo[1]);
 	double h = fmax(f->h[0], f->h[1]);
+	double p = standing_wave_period(f);
+	/* a whole number of segments per grid cell, so that the deloop
+	 * classifier's grid (deloop_classifier: cells of two segments or
+	 * less) need not be refined laterally at 0.05 um on a 0.1 um grid */
+	if (p > 0 && h > ETCH_SEG_PER_PERIOD * p)
+		h /= ceil(h / (ETCH_SEG_PER_PERIOD * p));
 	return fmin(w / ETCH_SEG_DIVISIONS, h);
 }
 
@@ -85,6 +175,14 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 {
 	double seg = o->seg > 0 ? o->seg : etch_default_seg(f);
 	st->seg = seg;
+	if (o->seg > 0 && o->deloop && !o->quiet) {
+		double p = standing_wave_period(f);
+		if (p > 0 && o->seg > ETCH_SEG_PER_PERIOD * p * (1 + 1e-9))
+			fprintf(stderr, "%s: warning: -seg %g is coarse for the standing waves "
+				"(period %.3g um): the front will lag them and -deloop may take it "
+				"for loops; the default is %g\n", util_prog(), o->seg, p,
+				etch_default_seg(f));
+	}
 	st->dt_grad = f->gmax > 0 ? 1 / f->gmax : 0;
 	st->dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
 	/* the bound of the mesh (ETCH_MESH_FACTOR) */

@@ -20,6 +20,7 @@
 
 struct grid {
 	const double *f;
+	const double *w;        /* speeds per point, or NULL: linear crossings */
 	int n[3];
 	const double *b;
 	double level;
@@ -32,8 +33,9 @@ struct grid {
  * padded tetrahedra are far from degenerate in double precision */
 #define PAD_REL 1e-6
 
-static double at(const struct grid *g, const int idx[3], double p[3])
+static double at(const struct grid *g, const int idx[3], double p[3], double *w)
 {
+	*w = 0;
 	int out = 0;
 	for (int d = 0; d < 3; d++) {
 		int i = idx[d];
@@ -46,10 +48,40 @@ static double at(const struct grid *g, const int idx[3], double p[3])
 	if (out)
 		return INFINITY; /* crossings towards the pad fall on the face point */
 	size_t k = ((size_t)idx[2] * (size_t)g->n[1] + (size_t)idx[1]) * (size_t)g->n[0] + (size_t)idx[0];
+	if (g->w)
+		*w = g->w[k];
 	return g->f[k];
 }
 
-static void lerp(const double *a, double fa, const double *b, double fb, double level, double *out)
+/* The fraction of the way from a to b where f = level.  Without speeds
+ * f is taken as linear along the edge.  With speeds (wa, wb > 0, linear
+ * along the edge) f is taken as an arrival time: a locally plane front
+ * crosses the edge at a fixed angle, so f grows as the integral of 1/w
+ * along it, f(s) - fa = (fb - fa) ln(w(s)/wa) / ln(wb/wa), whose inverse
+ * gives s = (r^phi - 1)/(r - 1), r = wb/wa, phi the linear fraction.
+ * It is computed from the end below the level, so the tetrahedra
+ * sharing an edge, which may name its ends in either order, agree. */
+double iso_crossing(double fa, double wa, double fb, double wb, double level)
+{
+	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
+		return (level - fa) / (fb - fa);
+	int flip = fb < fa;
+	if (flip) {
+		double x = fa;
+		fa = fb;
+		fb = x;
+		x = wa;
+		wa = wb;
+		wb = x;
+	}
+	double phi = (level - fa) / (fb - fa), lr = log(wb / wa);
+	if (fabs(lr) > 1e-12)
+		phi = expm1(phi * lr) / expm1(lr);
+	return flip ? 1 - phi : phi;
+}
+
+static void lerp(const double *a, double fa, double wa, const double *b, double fb, double wb,
+		 double level, double *out)
 {
 	if (isinf(fa) || isinf(fb)) {   /* a pad point: the crossing is its partner */
 		const double *c = isinf(fa) ? b : a;
@@ -57,7 +89,7 @@ static void lerp(const double *a, double fa, const double *b, double fb, double 
 			out[d] = c[d];
 		return;
 	}
-	double t = (level - fa) / (fb - fa);
+	double t = iso_crossing(fa, wa, fb, wb, level);
 	for (int d = 0; d < 3; d++)
 		out[d] = a[d] + t * (b[d] - a[d]);
 }
@@ -100,7 +132,7 @@ static long out(double *tri, const double *up, iso_emit emit, void *ctx, double 
 	return 1;
 }
 
-static long tet(const double p[4][3], const double v[4], double level,
+static long tet(const double p[4][3], const double v[4], const double w[4], double level,
 		iso_emit emit, void *ctx, double scale, const double *box)
 {
 	int in[4], nin = 0;
@@ -130,7 +162,8 @@ static long tet(const double p[4][3], const double v[4], double level,
 		int m = 0;
 		for (int i = 0; i < 4; i++)
 			if (i != lone)
-				lerp(p[lone], v[lone], p[i], v[i], level, tri + 3 * m++);
+				lerp(p[lone], v[lone], w[lone], p[i], v[i], w[i], level,
+				     tri + 3 * m++);
 		return out(tri, up, emit, ctx, scale, box);
 	}
 	/* two in, two out: a quadrilateral a0-b0, a0-b1, a1-b1, a1-b0 */
@@ -142,10 +175,10 @@ static long tet(const double p[4][3], const double v[4], double level,
 			b[nb++] = i;
 	}
 	double q[4][3];
-	lerp(p[a[0]], v[a[0]], p[b[0]], v[b[0]], level, q[0]);
-	lerp(p[a[0]], v[a[0]], p[b[1]], v[b[1]], level, q[1]);
-	lerp(p[a[1]], v[a[1]], p[b[1]], v[b[1]], level, q[2]);
-	lerp(p[a[1]], v[a[1]], p[b[0]], v[b[0]], level, q[3]);
+	lerp(p[a[0]], v[a[0]], w[a[0]], p[b[0]], v[b[0]], w[b[0]], level, q[0]);
+	lerp(p[a[0]], v[a[0]], w[a[0]], p[b[1]], v[b[1]], w[b[1]], level, q[1]);
+	lerp(p[a[1]], v[a[1]], w[a[1]], p[b[1]], v[b[1]], w[b[1]], level, q[2]);
+	lerp(p[a[1]], v[a[1]], w[a[1]], p[b[0]], v[b[0]], w[b[0]], level, q[3]);
 	long n = 0;
 	for (int d = 0; d < 3; d++) {
 		tri[d] = q[0][d], tri[3 + d] = q[1][d], tri[6 + d] = q[2][d];
@@ -161,7 +194,13 @@ static long tet(const double p[4][3], const double v[4], double level,
 long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6],
 		 double level, int closed, iso_emit emit, void *ctx)
 {
-	struct grid g = {f, {nx, ny, nz}, bounds, level, closed};
+	return iso_surface_speed(f, NULL, nx, ny, nz, bounds, level, closed, emit, ctx);
+}
+
+long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
+		       const double bounds[6], double level, int closed, iso_emit emit, void *ctx)
+{
+	struct grid g = {f, w, {nx, ny, nz}, bounds, level, closed};
 	/* the six tetrahedra of the Kuhn split: 0, e_a, e_a+e_b, 1 for each
 	 * order (a, b, c) of the axes; corners numbered x + 2y + 4z */
 	static const int kuhn[6][4] = {
@@ -176,19 +215,20 @@ long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6]
 	for (int k = lo; k < nz - 1 - lo; k++)
 		for (int j = lo; j < ny - 1 - lo; j++)
 			for (int i = lo; i < nx - 1 - lo; i++) {
-				double cp[8][3], cv[8];
+				double cp[8][3], cv[8], cw[8];
 				for (int c = 0; c < 8; c++) {
 					int idx[3] = {i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)};
-					cv[c] = at(&g, idx, cp[c]);
+					cv[c] = at(&g, idx, cp[c], &cw[c]);
 				}
 				for (int t = 0; t < 6; t++) {
-					double p[4][3], v[4];
+					double p[4][3], v[4], sw[4];
 					for (int q = 0; q < 4; q++) {
 						for (int d = 0; d < 3; d++)
 							p[q][d] = cp[kuhn[t][q]][d];
 						v[q] = cv[kuhn[t][q]];
+						sw[q] = cw[kuhn[t][q]];
 					}
-					count += tet((const double (*)[3])p, v, level, emit, ctx, scale,
+					count += tet((const double (*)[3])p, v, sw, level, emit, ctx, scale,
 						     closed ? bounds : NULL);
 				}
 			}

@@ -25,4 +25,20 @@ typedef void (*iso_emit)(void *ctx, const double tri[9]);
 long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6],
 		 double level, int closed, iso_emit emit, void *ctx);
 
+/* The same with a speed w > 0 per grid point (same layout as f) when f
+ * is an arrival time: along each edge the crossing is placed as if the
+ * front crossed it at a fixed angle with w linear along it (f growing
+ * as the integral of 1/w), not as if f were linear.  Where the speed
+ * changes several-fold within a cell (a resist's rate at the edge of an
+ * image) linear interpolation puts the surface up to a fifth of a cell
+ * behind the front.  A point with w <= 0 gives linear crossings on its
+ * edges.  w NULL is iso_surface. */
+long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
+		       const double bounds[6], double level, int closed, iso_emit emit, void *ctx);
+
+/* The fraction of the way from a to b at which f = level on an edge
+ * whose ends have values fa, fb and speeds wa, wb, as iso_surface_speed
+ * places it (linear in f where a speed is not positive). */
+double iso_crossing(double fa, double wa, double fb, double wb, double level);
+
 #endif

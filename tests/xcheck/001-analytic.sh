@@ -3,9 +3,10 @@
 # T = t (tests/etch/fmm_exact xcheck: fmm_distance_stats).  Pass: median
 # distance under half a rate-grid z cell, 95th percentile under two cells,
 # once the fast-marching solve is refined in z until it has converged.
-# It also shows why it must be refined: on the 10:1 standing-wave column a
-# plain solve is more than half a cell off (measured 1.27 cells; x4 0.17,
-# x16 0.011).
+# On the 10:1 standing-wave column the plain solve must pass too: its
+# differences stand for the slowness integrated over the cells (fmm.c),
+# measured 0.074 cells (with the node's own slowness, the published
+# scheme, it was 1.27 cells off; x4 0.17, x16 0.011).
 . "$TOP/tests/lib/common.sh"
 MK=$BUILD/tests/lib/mkrate
 X=$BUILD/tests/etch/fmm_exact
@@ -18,9 +19,7 @@ ok() { # ok LINE: "... median M um (C cells), 95% P um (Q cells)" within limits
 $MK -o z.bin 11 11 101 -1 1 -1 1 -1 0 '0.05+0.045*sin(2*pi*z/0.13)' || fail "mkrate"
 etch -q -et 10 -pt 5 z.bin || fail "etch (z only)"
 plain=$($X xcheck z.bin curves.plot 1 5 10 | tail -n 1)
-echo "plain: $plain"
-echo "$plain" | awk '{ for (i = 1; i <= NF; i++) if ($i ~ /^\([0-9.]/) { exit !(substr($i, 2) + 0 > 0.5) } }' ||
-	fail "expected the plain solve to be over half a cell off: $plain"
+ok "plain: $plain"
 $X xcheck z.bin curves.plot 16 5 10 >z16.txt || fail "xcheck z x16"
 while read -r line; do ok "$line"; done <z16.txt
 # 2. thesis Figure 8.7's ridge R = exp(-4 x^2)(1.05 - cos(2 pi z)), 1.5 s
