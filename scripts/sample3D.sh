@@ -41,7 +41,7 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
               middle of the cell); also written by etch to curves.cut
   -q          quiet: no progress lines
   etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
-              -rl L -linear -clip N -method ray|fmm
+              -rl L -linear -clip N -method ray|fmm -no2d -last
               -etch "OPTS" passes any other etch options verbatim
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
               and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0"
@@ -55,7 +55,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
 printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
-cutaxis="" cutval="" measureopts=""
+cutaxis="" cutval="" measureopts="" last=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help) usage; exit 0 ;;
@@ -72,7 +72,8 @@ while [ $# -gt 0 ]; do
 	-e) stretch=-e; shift ;;
 	-noe) stretch="-zs 1"; shift ;;
 	-q) quiet=-q; shift ;;
-	-linear) etchopts="$etchopts -linear"; shift ;;
+	-linear|-no2d) etchopts="$etchopts $1"; shift ;;
+	-last) etchopts="$etchopts -last"; last=yes; shift ;;
 	-deloop)
 		# an optional step count follows
 		case ${2:-} in
@@ -162,6 +163,7 @@ fi
 # as a solid block, one page per print time; cut.ps, the cross-section;
 # image.ps, the aerial image when splat ran.  dataplot.ps is the profile
 # (the thesis' name for sample3D's picture).
+[ -z "$last" ] || printtime=""      # -last: the final set only
 times=$(awk -v et="$etchtime" -v pt="${printtime:-0}" 'BEGIN {
 	# the print times as etch takes them: every pt, and the end
 	for (k = 1; ; k++) {

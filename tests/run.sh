@@ -11,9 +11,10 @@
 #
 # Tests run TEST_JOBS at a time (default: the number of cores), the
 # slowest of the previous run first (their times are kept in
-# BUILD/test-times), but results are printed in name order as soon as
-# they are known, with a summary line when an area is complete.  The
-# printed output is the same whatever the number of jobs.
+# BUILD/test-times).  An area (tests/<area>/) is reported as soon as all
+# its tests are done: its tests' results in name order, then a line with
+# its counts; the areas come in the order they finish, the closing line
+# "N passed, N failed" last.
 #
 # Environment: TESTS="pattern" runs only the tests whose name contains it;
 # TEST_TIMEOUT (seconds, default 600) bounds each test; TEST_JOBS sets the
@@ -94,49 +95,65 @@ ONE
 ) >/dev/null 2>&1 &
 pool=$!
 
-pass=0 fail=0 skip=0 failed="" area="" apass=0 afail=0 askip=0 atime=0
+pass=0 fail=0 skip=0 failed=""
 newtimes=$work/times
-area_line() {
-	[ -n "$area" ] || return 0
-	line="== $area: $apass passed, $afail failed"
+# the areas, in name order, each with its tests
+areas=$(for name in $sel; do echo "${name%%/*}"; done | uniq)
+area_tests() { for name in $sel; do case $name in "$1"/*) echo "$name" ;; esac; done; }
+# 1 when every test of the area has finished (or the pool has died)
+area_done() {
+	for name in $(area_tests "$1"); do
+		[ -f "$work/$(echo "$name" | tr '/.' '__').st" ] || return 1
+	done
+	return 0
+}
+# prints an area's results, its tests in name order, then its line
+report_area() {
+	apass=0 afail=0 askip=0 atime=0
+	for name in $(area_tests "$1"); do
+		id=$(echo "$name" | tr '/.' '__')
+		if [ -f "$work/$id.st" ]; then
+			read st secs <"$work/$id.st"
+		else
+			st=125 secs=0
+			echo "run.sh: the test was never run" >>"$work/$id.log"
+		fi
+		echo "$secs $name" >>"$newtimes"
+		atime=$((atime + secs))
+		if [ "$st" -eq 0 ]; then
+			pass=$((pass + 1)) apass=$((apass + 1))
+			echo "PASS $name"
+		elif [ "$st" -eq 77 ]; then
+			skip=$((skip + 1)) askip=$((askip + 1))
+			echo "SKIP $name: $(tail -n 1 "$work/$id.log")"
+		else
+			fail=$((fail + 1)) afail=$((afail + 1))
+			failed="$failed $name"
+			echo "FAIL $name (exit $st)"
+			tail -n 30 "$work/$id.log" | sed 's/^/    /'
+		fi
+	done
+	line="== $1: $apass passed, $afail failed"
 	[ $askip -gt 0 ] && line="$line, $askip skipped"
 	echo "$line ($atime s)"
 }
-for name in $sel; do
-	a=${name%%/*}
-	if [ "$a" != "$area" ]; then
-		area_line
-		area=$a apass=0 afail=0 askip=0 atime=0
-	fi
-	id=$(echo "$name" | tr '/.' '__')
-	while [ ! -f "$work/$id.st" ]; do
-		if ! kill -0 "$pool" 2>/dev/null && [ ! -f "$work/$id.st" ]; then
-			break
+# an area is reported as soon as all its tests are done, so a long test
+# holds back only its own area's lines
+left=$areas
+while [ -n "$left" ]; do
+	rest=""
+	alive=1
+	kill -0 "$pool" 2>/dev/null || alive=0
+	for a in $left; do
+		if [ $alive -eq 0 ] || area_done "$a"; then
+			report_area "$a"
+		else
+			rest="$rest $a"
 		fi
-		sleep 0.2
 	done
-	if [ -f "$work/$id.st" ]; then
-		read st secs <"$work/$id.st"
-	else
-		st=125 secs=0
-		echo "run.sh: the test was never run" >>"$work/$id.log"
-	fi
-	echo "$secs $name" >>"$newtimes"
-	atime=$((atime + secs))
-	if [ "$st" -eq 0 ]; then
-		pass=$((pass + 1)) apass=$((apass + 1))
-		echo "PASS $name"
-	elif [ "$st" -eq 77 ]; then
-		skip=$((skip + 1)) askip=$((askip + 1))
-		echo "SKIP $name: $(tail -n 1 "$work/$id.log")"
-	else
-		fail=$((fail + 1)) afail=$((afail + 1))
-		failed="$failed $name"
-		echo "FAIL $name (exit $st)"
-		tail -n 30 "$work/$id.log" | sed 's/^/    /'
-	fi
+	left=$rest
+	[ -z "$left" ] || sleep 0.3
 done
-area_line
 wait "$pool" 2>/dev/null
 pool=""
 # keep the times of this run (and of tests it did not run) for the next

@@ -61,6 +61,7 @@ struct etch_opts {
 	const char *out3d, *out2d, *outcut;
 	const char *outvtk;     /* -vtk: VTK XML PolyData, or NULL */
 	int no2d;               /* -no2d: no curves.plot.2D */
+	int last;               /* -last: only the final set is written */
 	int dryrun;             /* -n: check the command line only */
 	const char *input;
 };

@@ -26,7 +26,7 @@ static const char usage[] =
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm|cell|huygens]\n"
 	"            [-refine n|nx ny nz|auto]\n"
-	"            [-o curves.plot] [-no2d] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
+	"            [-o curves.plot] [-no2d] [-last] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
 	"            [-threads n] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
@@ -57,6 +57,7 @@ static const char usage[] =
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
+	"  -last            write only the final set (-pt still paces -deloop)\n"
 	"  -vtk file.vtp    also write the surfaces as VTK XML PolyData (ParaView)\n"
 	"  -check           check the mesh's consistency after every step\n"
 	"  -n               check the command line only: read and write nothing\n"
@@ -166,6 +167,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->check = 1;
 		else if (args_flag(&a, "-no2d"))
 			o->no2d = 1;
+		else if (args_flag(&a, "-last"))
+			o->last = 1;
 		else if (args_flag(&a, "-n"))
 			o->dryrun = 1;
 		else if (args_flag(&a, "-q"))
@@ -221,6 +224,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		o->method = method[0] == 'c' ? METHOD_CELL : METHOD_HUYGENS;
 	else
 		args_error(&a, "-method must be ray, fmm, cell or huygens, not %.40s", method);
+	if (o->last && (o->method == METHOD_CELL || o->method == METHOD_HUYGENS))
+		args_error(&a, "-last goes with -method ray or fmm");
 	if ((o->refine_auto || o->refine[0] * o->refine[1] * o->refine[2] > 1) &&
 	    o->method != METHOD_FMM && !o->xcheck)
 		args_error(&a, "-refine goes with -method fmm or -xcheck");
@@ -392,13 +397,15 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 				 : fmm_solve(r, refine);
 	int n;
 	double *times = print_times(o, &n);
-	fmm_write_curves(fm, times, n, o->out3d, o->out2d);
+	/* -last: only the final set is written */
+	int first = o->last ? n - 1 : 0;
+	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d);
 	if (o->cut_axis >= 0 && o->outcut) {
 		/* bounds as the ray-string cut: the other axis' range, then z */
 		int other = 1 - o->cut_axis;
 		double bc[4] = {f->lo[other], f->hi[other], f->lo[2], f->hi[2]};
 		struct plot_file *pf = fmt_plot_new(2);
-		for (int k = 0; k < n; k++)
+		for (int k = first; k < n; k++)
 			fmm_cut(fm, times[k], o->cut_axis, o->cut_value, pf, bc);
 		fmt_plot_write(o->outcut, pf);
 		fmt_plot_free(pf);

@@ -248,7 +248,8 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 			progress_step(&prog, t + i * (span / n), o->et);
 		}
 		t = tp;
-		out_write(out, m);
+		if (!o->last || tp >= o->et)    /* -last: only the final set */
+			out_write(out, m);
 		if (!o->quiet)
 			fprintf(stderr, "%s: t = %g s: %zu nodes, %zu triangles\n",
 				util_prog(), t, m->live_node, m->live_tri);
