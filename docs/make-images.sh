@@ -34,7 +34,7 @@ png cut "" cut.ps
 # contact (README, "Focus-exposure matrices")
 H=$TOP/examples/contact-highna
 fem -q -if "$H/mask.in" -bf "$H/resist.in" -et 60 -method fmm -dose 60:120:10 -focus -1.2:0.6:0.3 \
-	-measure "-rel 5,95 -hole 0 0" -target 0.42 -tol 10 -j 2 >/dev/null
+	-measure "-rel 5,95 -hole 0 0" -target 0.5 -tol 10 -j 2 >/dev/null
 cp fem/bossung.ps dataplot.ps; png bossung
 cp fem/window.ps dataplot.ps; png window
 cp fem/region.ps dataplot.ps; png region
