@@ -111,9 +111,11 @@ check: all
 ASAN_VARS = BUILD=build-asan OPT=-O1 \
 	CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
 	LDFLAGS="-fsanitize=address,undefined"
+# the sanitizers slow the programs 3-10x: the whole-pipeline tests (every
+# example end to end) get more than run.sh's 600 s default
 asan:
 	$(MAKE) -j2 $(ASAN_VARS) all
-	$(MAKE) $(ASAN_VARS) check
+	TEST_TIMEOUT=$${TEST_TIMEOUT:-2400} $(MAKE) $(ASAN_VARS) check
 
 bench: all
 	@sh tests/bench/run.sh $(BUILD)
