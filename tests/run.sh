@@ -60,7 +60,10 @@ ntests=$(echo $sel | wc -w)
 
 # the previous run's times (seconds) order the start, slowest first
 times=$BUILD/test-times
-[ -f "$times" ] || : >"$times" 2>/dev/null || times=/dev/null
+# a fresh build starts from the times kept in the tree (tests/test-times,
+# refreshed now and then from a build's), so the long tests start first
+[ -f "$times" ] || cp "$TOP/tests/test-times" "$times" 2>/dev/null ||
+	: >"$times" 2>/dev/null || times=/dev/null
 order=$(for name in $sel; do
 	s=$(awk -v n="$name" '$2 == n { s = $1 } END { print s + 0 }' "$times")
 	echo "$s $name"
