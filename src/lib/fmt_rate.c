@@ -405,23 +405,36 @@ static int is_compressed(const char *path)
 	       (n > 2 && strcmp(path + n - 2, ".Z") == 0);
 }
 
+/* The stream a binary read has open.  A program's die() exits, which
+ * closes it; an in-process caller that returns from die() (the fuzz
+ * harness) would leak it, one descriptor a bad file, until fopen fails:
+ * so the next read closes what a dead one left. */
+static FILE *rate_stream;
+
 struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want)
 {
 	const char *name = strcmp(path, "-") == 0 ? "stdin" : path;
 	struct ratefile *r;
+	if (rate_stream) {
+		fclose(rate_stream);
+		rate_stream = NULL;
+	}
 	/* a plain binary file is streamed from disk: no copy of it in memory */
 	if (strcmp(path, "-") != 0 && !is_compressed(path)) {
 		FILE *f = fopen(path, "rb");
 		if (!f)
 			die("%s: cannot open:", path);
+		rate_stream = f;
 		struct stat st;
 		unsigned char magic[8];
 		if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) &&
 		    fread(magic, 1, 8, f) == 8 && memcmp(magic, RATE_MAGIC_BIN, 8) == 0) {
 			r = read_binary(name, f, (size_t)st.st_size, want);
+			rate_stream = NULL;
 			fclose(f);
 			return r;
 		}
+		rate_stream = NULL;
 		fclose(f);
 	}
 	size_t len;
@@ -431,7 +444,9 @@ struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want)
 		if (!f)
 			die("%s: cannot read:", name);
 		rate_held = buf;
+		rate_stream = f;
 		r = read_binary(name, f, len, want);
+		rate_stream = NULL;
 		rate_held = NULL;
 		fclose(f);
 		free(buf);
