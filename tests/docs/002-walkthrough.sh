@@ -10,7 +10,9 @@ awk '/^## A walk through the contact example/ { on = 1 }
 	code { print }' "$TOP/README.md" >walk.sh
 [ -s walk.sh ] || fail "no sh block in the README's walk-through"
 grep -q /tmp/contact walk.sh || fail "the walk-through no longer works in /tmp/contact: update this test"
-sed "s|/tmp/contact|$PWD/contact|g" walk.sh >walk1.sh
+grep -q 'S=$T/build/bin' walk.sh || fail "the walk-through no longer takes the programs from \$T/build/bin: update this test"
+# the build under test (build-asan, build-nox11, ...) stands for build/
+sed -e "s|/tmp/contact|$PWD/contact|g" -e "s|S=\$T/build/bin|S=$BUILD/bin|" walk.sh >walk1.sh
 cat walk1.sh walk1.sh >twice.sh
 # run from the top of the tree, with the build's programs NOT on PATH
 here=$PWD
