@@ -163,6 +163,32 @@ static int paint_layers(const struct splat_mask *m, struct poly_set **out,
 	return k;
 }
 
+/* Keeps, of the coefficients cc of all orders |p| <= mmax, |q| <= nmax
+ * (row q + nmax, column p + mmax), those inside the circle |f| <= fm, in
+ * o's order lists (both mask paths end here). */
+static void keep_in_circle(struct orders *o, const double complex *cc, double fm)
+{
+	int nm = 2 * o->mmax + 1, nn = 2 * o->nmax + 1;
+	size_t cap = (size_t)nm * nn;
+	o->m = xreallocarray(NULL, cap, sizeof *o->m);
+	o->k = xreallocarray(NULL, cap, sizeof *o->k);
+	o->fx = xreallocarray(NULL, cap, sizeof *o->fx);
+	o->fy = xreallocarray(NULL, cap, sizeof *o->fy);
+	o->c = xreallocarray(NULL, cap, sizeof *o->c);
+	for (int q = -o->nmax; q <= o->nmax; q++)
+		for (int p = -o->mmax; p <= o->mmax; p++) {
+			double fx = p / o->lx, fy = q / o->ly;
+			if (hypot(fx, fy) > fm)
+				continue;
+			o->m[o->n] = p;
+			o->k[o->n] = q;
+			o->fx[o->n] = fx;
+			o->fy[o->n] = fy;
+			o->c[o->n] = cc[(size_t)(q + o->nmax) * nm + p + o->mmax];
+			o->n++;
+		}
+}
+
 /* cc[(n + nmax) * nm + m + mmax] += the transform of the painted layers,
  * minus the background under them, divided by Lx Ly. */
 static void polygon_orders(const struct splat_mask *m, const struct orders *o,
@@ -279,25 +305,7 @@ struct orders *mask_orders(const struct splat_mask *m, double fmax)
 	}
 	cc[(size_t)o->nmax * nm + o->mmax] += bg;
 
-	/* keep the orders inside the circle |f| <= fmax */
-	size_t cap = (size_t)nm * nn;
-	o->m = xreallocarray(NULL, cap, sizeof *o->m);
-	o->k = xreallocarray(NULL, cap, sizeof *o->k);
-	o->fx = xreallocarray(NULL, cap, sizeof *o->fx);
-	o->fy = xreallocarray(NULL, cap, sizeof *o->fy);
-	o->c = xreallocarray(NULL, cap, sizeof *o->c);
-	for (int q = -o->nmax; q <= o->nmax; q++)
-		for (int p = -o->mmax; p <= o->mmax; p++) {
-			double fx = p / o->lx, fy = q / o->ly;
-			if (hypot(fx, fy) > fm)
-				continue;
-			o->m[o->n] = p;
-			o->k[o->n] = q;
-			o->fx[o->n] = fx;
-			o->fy[o->n] = fy;
-			o->c[o->n] = cc[(size_t)(q + o->nmax) * nm + p + o->mmax];
-			o->n++;
-		}
+	keep_in_circle(o, cc, fm);
 	free(ex);
 	free(ey);
 	free(tau);
@@ -318,24 +326,7 @@ static struct orders *mask_orders_poly(const struct splat_mask *m, struct orders
 	double complex *cc = xcalloc((size_t)nm * nn, sizeof *cc);
 	polygon_orders(m, o, bg, cc);
 	cc[(size_t)o->nmax * nm + o->mmax] += bg;
-	size_t cap = (size_t)nm * nn;
-	o->m = xreallocarray(NULL, cap, sizeof *o->m);
-	o->k = xreallocarray(NULL, cap, sizeof *o->k);
-	o->fx = xreallocarray(NULL, cap, sizeof *o->fx);
-	o->fy = xreallocarray(NULL, cap, sizeof *o->fy);
-	o->c = xreallocarray(NULL, cap, sizeof *o->c);
-	for (int q = -o->nmax; q <= o->nmax; q++)
-		for (int p = -o->mmax; p <= o->mmax; p++) {
-			double fx = p / o->lx, fy = q / o->ly;
-			if (hypot(fx, fy) > fm)
-				continue;
-			o->m[o->n] = p;
-			o->k[o->n] = q;
-			o->fx[o->n] = fx;
-			o->fy[o->n] = fy;
-			o->c[o->n] = cc[(size_t)(q + o->nmax) * nm + p + o->mmax];
-			o->n++;
-		}
+	keep_in_circle(o, cc, fm);
 	free(cc);
 	return o;
 }
