@@ -153,6 +153,28 @@ static double solve(const double *T, const unsigned char *st, int nx, int nz, in
 	return best;
 }
 
+/* The four neighbours of accepted node (i, k) not yet accepted and with a
+ * rate: their times from the upwind update, lowered ones put in the band. */
+static void update_neighbours(double *T, unsigned char *st, const double *R, int nx, int nz,
+			      double hx, double hz, struct heap *hp, int i, int k)
+{
+	int nb[4][2] = {{i - 1, k}, {i + 1, k}, {i, k - 1}, {i, k + 1}};
+	for (int q = 0; q < 4; q++) {
+		int a = nb[q][0], b = nb[q][1];
+		if (a < 0 || a >= nx || b < 0 || b >= nz)
+			continue;
+		size_t c2 = (size_t)b * nx + a;
+		if (st[c2] == DONE || !(R[c2] > 0))
+			continue;
+		double t = solve(T, st, nx, nz, a, b, hx, hz, R[c2]);
+		if (t < T[c2]) {
+			T[c2] = t;
+			st[c2] = TRIAL;
+			push_or_update(hp, (int)c2);
+		}
+	}
+}
+
 void run_fmm(struct e2 *e)
 {
 	int cx, cz;
@@ -195,21 +217,7 @@ void run_fmm(struct e2 *e)
 		if (st[c] != DONE)
 			continue;
 		int i = (int)(c % nx), k = (int)(c / nx);
-		int nb[4][2] = {{i - 1, k}, {i + 1, k}, {i, k - 1}, {i, k + 1}};
-		for (int q = 0; q < 4; q++) {
-			int a = nb[q][0], b = nb[q][1];
-			if (a < 0 || a >= nx || b < 0 || b >= nz)
-				continue;
-			size_t c2 = (size_t)b * nx + a;
-			if (st[c2] == DONE || !(R[c2] > 0))
-				continue;
-			double t = solve(T, st, nx, nz, a, b, hx, hz, R[c2]);
-			if (t < T[c2]) {
-				T[c2] = t;
-				st[c2] = TRIAL;
-				push_or_update(&hp, (int)c2);
-			}
-		}
+		update_neighbours(T, st, R, nx, nz, hx, hz, &hp, i, k);
 	}
 	/* the whole grid is marched: a contour's crossings need the final
 	 * times of the nodes just beyond it too */
@@ -218,21 +226,7 @@ void run_fmm(struct e2 *e)
 		st[c] = DONE;
 		e->st.steps++;
 		int i = c % nx, k = c / nx;
-		int nb[4][2] = {{i - 1, k}, {i + 1, k}, {i, k - 1}, {i, k + 1}};
-		for (int q = 0; q < 4; q++) {
-			int a = nb[q][0], b = nb[q][1];
-			if (a < 0 || a >= nx || b < 0 || b >= nz)
-				continue;
-			size_t c2 = (size_t)b * nx + a;
-			if (st[c2] == DONE || !(R[c2] > 0))
-				continue;
-			double t = solve(T, st, nx, nz, a, b, hx, hz, R[c2]);
-			if (t < T[c2]) {
-				T[c2] = t;
-				st[c2] = TRIAL;
-				push_or_update(&hp, (int)c2);
-			}
-		}
+		update_neighbours(T, st, R, nx, nz, hx, hz, &hp, i, k);
 		if ((long)hp.n > e->st.items)
 			e->st.items = (long)hp.n;
 	}
