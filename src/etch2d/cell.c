@@ -103,6 +103,22 @@ void run_cell(struct e2 *e)
 		i = i < 0 ? 0 : i >= g.nx ? g.nx - 1 : i;
 		k = k < 0 ? 0 : k >= g.nz ? g.nz - 1 : k;
 		remove_cell(&g, k * g.nx + i);
+	} else if (e->sp) {
+		/* the cells whose centres lie above the start profile are
+		 * etched; the boundary: the others beside them or on top */
+		g.open_top = 1;
+		for (size_t c = 0; c < n; c++) {
+			int i = (int)(c % g.nx), k = (int)(c / g.nx);
+			g.etched[c] = (unsigned char)e2_start_etched(e, e->x0 + (i + 0.5) * g.dx,
+								      e->z0 + (k + 0.5) * g.dz);
+		}
+		for (size_t c = 0; c < n; c++) {
+			int i = (int)(c % g.nx), k = (int)(c / g.nx);
+			if (!g.etched[c] && (k == g.nz - 1 || (i > 0 && g.etched[c - 1]) ||
+					     (i + 1 < g.nx && g.etched[c + 1]) ||
+					     (k > 0 && g.etched[c - g.nx]) || g.etched[c + g.nx]))
+				add_boundary(&g, (int)c);
+		}
 	} else {
 		g.open_top = 1;
 		for (int i = 0; i < g.nx; i++)

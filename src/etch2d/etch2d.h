@@ -38,6 +38,10 @@ struct e2opts {
 	double seg;             /* node or ray spacing, um; 0: default */
 	double dt;              /* time step, s; 0: default */
 	double rl;              /* recursive length of vector checking */
+	const double *start;    /* -start: nstart points x z, the profile at
+				 * t = 0 (NULL: the flat top or the seed) */
+	int nstart;
+	const char *startfile;  /* its file, for messages */
 	int stats;
 	const char *out, *input;
 };
@@ -59,6 +63,9 @@ struct e2 {
 	int ntp;
 	struct plot_file *pf;   /* one set per print time */
 	struct plot_set *set;   /* the set being filled */
+	double *sp;             /* the start profile (nsp points, left to
+				 * right), or NULL */
+	int nsp;
 	struct e2stats st;
 };
 
@@ -80,6 +87,14 @@ void e2_run(struct e2 *e);
  * what e holds (not f). */
 void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o);
 void e2_free(struct e2 *e);
+
+/* start.c: the start profile of -start.  e2_start_init checks and orders
+ * o.start into e->sp (dies on a bad one); e2_start_etched: 1 if (x, z) is
+ * above the profile (etched at t = 0); e2_start_dist: the distance to it,
+ * and the nearest point in foot (if not NULL). */
+void e2_start_init(struct e2 *e);
+int e2_start_etched(const struct e2 *e, double x, double z);
+double e2_start_dist(const struct e2 *e, double x, double z, double foot[2]);
 
 /* profile.c: the output */
 void e2_begin_set(struct e2 *e);
@@ -147,9 +162,16 @@ void front_ends(struct e2 *e, struct front *fr);
 /* The start: from the resist top, nodes spaced at most seg along it
  * pointing down; from a seed (on the top), nseed nodes at the seed with
  * directions spread evenly over the half circle below the top, the
- * first and last along the top. */
+ * first and last along the top; from a -start profile,
+ * front_start_profile with fans of rays pi / (nseed - 1) apart. */
 void front_start(struct e2 *e, struct front *fr, double seg, long nseed);
 /* Default node spacing (width / 50, the thesis' 50 segments) and step. */
+/* The start from a -start profile: a node at each vertex and at most seg
+ * apart between, pointing along the normal into the resist (the bisector
+ * at a vertex); at a diverging corner (the profile turning away from the
+ * resist) with fan > 0 a fan of nodes at the vertex whose directions turn
+ * from the one face's normal to the other's at most fan radians apart. */
+void front_start_profile(struct e2 *e, struct front *fr, double seg, double fan);
 double front_seg(const struct e2 *e);
 double front_dt(const struct e2 *e);
 void front_free(struct front *fr);

@@ -9,7 +9,9 @@
  *
  * Start: from the resist top every node of the top row has T = 0; from a
  * seed, the nodes within START_CELLS node spacings of it get T = distance
- * / R(seed), the exact time where the rate is uniform near the seed.  The
+ * / R(seed), the exact time where the rate is uniform near the seed; from
+ * a -start profile (start.c) the nodes above it have T = -distance / R and
+ * those next to them below T = distance / R.  The
  * box's edges are walls (no flux through them), so from a seed the front
  * slides along the top.  The grid has -cells nx nz cells (nodes one more
  * each way); nodes where R = 0 are never reached.
@@ -24,8 +26,10 @@
 
 /* radius of the exact start around a seed, in node spacings */
 #define START_CELLS 3.0
+/* A node this close (in node spacings) to a -start profile is on it. */
+#define START_ON 1e-9
 
-enum { FAR, TRIAL, DONE };
+enum { FAR, TRIAL, DONE, NEAR };
 
 struct heap {
 	size_t n;
@@ -205,6 +209,39 @@ void run_fmm(struct e2 *e)
 				st[c] = DONE;
 			}
 		}
+	} else if (e->sp) {
+		/* above the start profile: T = -distance / R; below it, the
+		 * nodes next to one above (or on it): T = distance / R, R the
+		 * mean of the node's and the profile's there */
+		for (size_t c = 0; c < n; c++) {
+			int i = (int)(c % nx), k = (int)(c / nx);
+			double x = e->x0 + i * hx, z = k == nz - 1 ? e->z1 : e->z0 + k * hz, foot[2];
+			double d = e2_start_dist(e, x, z, foot);
+			if (e2_start_etched(e, x, z) && R[c] > 0) {
+				T[c] = -d / R[c];
+				st[c] = DONE;
+			} else if (d <= START_ON * fmin(hx, hz)) {
+				T[c] = 0;
+				st[c] = DONE;
+			}
+		}
+		for (size_t c = 0; c < n; c++) {
+			int i = (int)(c % nx), k = (int)(c / nx);
+			if (st[c] == DONE || !(R[c] > 0))
+				continue;
+			int next = (i > 0 && st[c - 1] == DONE) || (i + 1 < nx && st[c + 1] == DONE) ||
+				   (k > 0 && st[c - nx] == DONE) || (k + 1 < nz && st[c + nx] == DONE);
+			if (!next)
+				continue;
+			double x = e->x0 + i * hx, z = k == nz - 1 ? e->z1 : e->z0 + k * hz, foot[2];
+			double d = e2_start_dist(e, x, z, foot);
+			double rf = e2_rate(e, foot[0], foot[1], NULL);
+			T[c] = 2 * d / (R[c] + (rf > 0 ? rf : R[c]));
+			st[c] = NEAR;   /* accepted below, after the scan */
+		}
+		for (size_t c = 0; c < n; c++)
+			if (st[c] == NEAR)
+				st[c] = DONE;
 	} else {
 		for (int i = 0; i < nx; i++) {
 			size_t c = (size_t)(nz - 1) * nx + i;

@@ -79,6 +79,11 @@ int front_flatten(const struct e2 *e, unsigned flags, double s[2])
 void front_start(struct e2 *e, struct front *fr, double seg, long nseed)
 {
 	fr->n = 0;
+	if (e->sp) {
+		/* rays fanned as from a seed: nseed over the half circle */
+		front_start_profile(e, fr, seg, nseed > 1 ? M_PI / (double)(nseed - 1) : M_PI / 8);
+		return;
+	}
 	if (e->o.seeded) {
 		for (long k = 0; k < nseed; k++) {
 			double th = M_PI * (double)(nseed - 1 - k) / (double)(nseed - 1);

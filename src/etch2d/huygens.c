@@ -47,6 +47,11 @@ void run_huygens(struct e2 *e)
 		i = i < 0 ? 0 : i >= nx ? nx - 1 : i;
 		k = k < 0 ? 0 : k >= nz ? nz - 1 : k;
 		et[(size_t)k * nx + i] = 1;
+	} else if (e->sp) {
+		/* the cells whose centres lie above the start profile */
+		for (size_t c = 0; c < n; c++)
+			et[c] = (unsigned char)e2_start_etched(e, e->x0 + ((double)(c % nx) + 0.5) * dx,
+								 e->z0 + ((double)(c / nx) + 0.5) * dz);
 	}
 	double t = 0;
 	int next = 0;

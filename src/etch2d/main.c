@@ -19,6 +19,7 @@ static const char usage[] =
 	"usage: etch2d -et etchtime [-pt printtime]\n"
 	"              [-method raystring|string|ray|cell|huygens|fmm] [-seed x z]\n"
 	"              [-cells nx nz] [-seg length] [-dt timestep] [-rl length]\n"
+	"              [-start profile.plot]\n"
 	"              [-o profile.plot] [-stats] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
@@ -31,6 +32,8 @@ static const char usage[] =
 	"  -seg length      node or ray spacing S_ideal, um (default width / 50)\n"
 	"  -dt timestep     time step, s (default 0.1; huygens: 10 cells at max R)\n"
 	"  -rl length       recursive length of vector checking (default 0.1)\n"
+	"  -start profile.plot  develop from this profile (plot2d(5): the last set's\n"
+	"                   one polyline, wall to wall; etched above it)\n"
 	"  -o profile.plot  output, a 2D plot file, one set per print time\n"
 	"                   (default profile.plot)\n"
 	"  -stats           print CPU time, memory, nodes or cells and steps\n";
@@ -60,6 +63,7 @@ static void parse_options(int argc, char **argv, struct e2opts *o)
 		    args_num(&a, "-dt", 0, 1e12, &o->dt) ||
 		    args_num(&a, "-rl", 0, 2, &o->rl) ||
 		    args_str(&a, "-o", &o->out) ||
+		    args_str(&a, "-start", &o->startfile) ||
 		    args_str(&a, "-method", &method))
 			;
 		else if (args_flag(&a, "-stats"))
@@ -90,13 +94,15 @@ static void parse_options(int argc, char **argv, struct e2opts *o)
 		args_error(&a, "-et etchtime is required (a time above 0 s)");
 	if (!o->input)
 		args_error(&a, "no rate-file");
+	if (o->startfile && o->seeded)
+		args_error(&a, "-start and -seed exclude each other (a start profile or a seed)");
 	args_done(&a, NULL);
 }
 
 /* What main holds while it may still die: reachable from a global (not
  * static: a write-only static may be optimised away) so that a fatal
  * error is not reported as a leak by the sanitizers. */
-struct etch2d_held { struct ratefile *r; struct e2 e; } etch2d_held;
+struct etch2d_held { struct ratefile *r; struct plot_file *start; struct e2 e; } etch2d_held;
 
 int main(int argc, char **argv)
 {
@@ -119,6 +125,17 @@ int main(int argc, char **argv)
 			    o.seed[0], o.seed[1], method_names[o.method], f.hi[2]);
 		if (surface)
 			o.seed[1] = f.hi[2];
+	}
+	if (o.startfile) {
+		/* the last set's single polyline: an etch2d profile's last time
+		 * serves as well as a drawn one */
+		struct plot_file *sp = etch2d_held.start = fmt_plot_read(o.startfile, 2);
+		const struct plot_set *s = sp->nsets ? &sp->sets[sp->nsets - 1] : NULL;
+		if (!s || s->ncurves != 1)
+			die("%s:1: -start needs one polyline in the last set (it has %d)",
+			    o.startfile, s ? s->ncurves : 0);
+		o.start = s->curves[0].p;
+		o.nstart = s->curves[0].npts;
 	}
 	struct e2 *ep = &etch2d_held.e;
 	e2_init(ep, &f, &o);
@@ -149,6 +166,8 @@ int main(int argc, char **argv)
 		fputc('\n', stderr);
 	}
 	e2_free(ep);
+	if (etch2d_held.start)
+		fmt_plot_free(etch2d_held.start);
 	fmt_rate_free(r);
 	return 0;
 }

@@ -27,7 +27,7 @@ void run_ray(struct e2 *e)
 	struct front fr = {0};
 	e2_check_steps(e, dt);
 	long nseed = 0;
-	if (e->o.seeded) {
+	if (e->o.seeded || e->sp) {
 		double m = ceil(M_PI * e->f->rmax * e->o.et / seg) + 1;
 		if (m > MAX_SEED_RAYS)
 			die("-seg %g asks for %.0f rays from the seed (at most %ld)", seg, m, MAX_SEED_RAYS);

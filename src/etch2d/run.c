@@ -52,11 +52,15 @@ void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o)
 	}
 	e->tp[e->ntp++] = o->et;
 	e->pf = fmt_plot_new(2);
+	if (o->start)
+		e2_start_init(e);
 }
 
 void e2_free(struct e2 *e)
 {
 	free(e->tp);
+	free(e->sp);
+	e->sp = NULL;
 	fmt_plot_free(e->pf);
 	e->tp = NULL;
 	e->pf = NULL;

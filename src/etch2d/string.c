@@ -58,6 +58,9 @@ void run_string(struct e2 *e)
 		}
 		front_clip(e, &fr);
 		t = t0;
+	} else if (e->sp) {
+		/* the thesis' plain string: one node at each corner (6.2.3.1) */
+		front_start_profile(e, &fr, seg, 0);
 	} else {
 		front_start(e, &fr, seg, 0);
 	}
