@@ -10,6 +10,11 @@
 #   fig4.4*, fig4.5*               Huygens cells on the triangular rates
 #   fig6.13, fig7.15b, fig7.19     rays, ray-string and delooping on them
 #   fig6.20*, fig7.21*             rays, string, ray-string in the sinusoid
+#   fig6.5-{string,string-fine,raystring,ray,fmm}.plot
+#                                  from a V groove (groove.plot, -start):
+#                                  the string's rounding at the bottom and
+#                                  scissoring at the rims, the ray-string's
+#                                  fan and delooping, the rays' swallowtails
 #   fig23.bin                      the Figure 2.3 rate (splat, bleach -cutline)
 #   fig3.4-{cell,string}.plot      cells (200 x 100) and string, 15..75 s
 #   table10.1-<method>.plot        every method, 15 and 30 s
@@ -39,6 +44,22 @@ for s in 0.1 0.02; do
 done
 etch2d -method raystring -seed 0 0 -seg 0.05 -et 1 -pt 0.1 -o fig7.7-raystring.plot uniform.rate
 draw fig7.7-raystring.plot
+# Figures 6.5-6.6: from a grooved surface (-start), uniform rate, 0.5 s:
+# a 90 degree V 0.3 um deep (its bottom a diverging corner, its 135
+# degree rims converging ones).  The string at the thesis' S_ideal 0.2
+# tapers the groove (rounding) and lets the rims lag (scissoring); at 0.05
+# less so; the ray-string fans its rays at the bottom and deloops the
+# rims; the rays alone keep the swallowtails; fmm is the exact offset
+# curve to a node spacing (tests/etch2d/corners measures all of them).
+printf -- '-1 1 -1 0\n1\n5\n-1 0\n-0.3 0\n0 -0.3\n0.3 0\n1 0\n' >groove.plot
+etch2d -method string -seg 0.2 -start groove.plot -et 0.5 -pt 0.1 -o fig6.5-string.plot uniform.rate
+etch2d -method string -seg 0.05 -start groove.plot -et 0.5 -pt 0.1 -o fig6.5-string-fine.plot uniform.rate
+etch2d -method raystring -seg 0.2 -start groove.plot -et 0.5 -pt 0.1 -o fig6.5-raystring.plot uniform.rate
+etch2d -method ray -seg 0.2 -start groove.plot -et 0.5 -pt 0.1 -o fig6.5-ray.plot uniform.rate
+etch2d -method fmm -start groove.plot -et 0.5 -pt 0.1 -o fig6.5-fmm.plot uniform.rate
+for f in string string-fine raystring ray fmm; do
+	draw fig6.5-$f.plot
+done
 # analytic rates (ASCII rval(5), ny = 1): the triangles of [4.1], [4.2]
 # and [7.9] on |x| < 0.5, and the sinusoid [7.10] of Figure 6.20
 rate() {   # rate NX NZ X0 X1 Z0 Z1 AWK-EXPRESSION-IN-x-z

@@ -7,7 +7,9 @@
 # method writes one set per print time (4 with -et 1 -pt 0.25) whose
 # bounds are the box, that drawplot draws; the output is byte-identical
 # between two runs; -stats prints its line; a 2D array round-trips through
-# the ASCII and binary forms of rval(5).
+# the ASCII and binary forms of rval(5); -start refuses a profile that is
+# not one polyline from wall to wall or crosses itself, and reads one
+# written right to left as the same.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
 [ -x "$MKRATE" ] || skip "mkrate not built"
@@ -37,7 +39,25 @@ expect_error etch2d -et 1 -method cell -cells 10000 10000 -o out.plot r2.bin
 expect_error etch2d -et 100 -dt 1e-9 -method huygens -o out.plot r2.bin
 expect_error etch2d -et 1e12 -o out.plot r2.bin
 expect_error etch2d -et 1 -seg 1e-12 -o out.plot r2.bin
+# -start: one polyline wall to wall, not crossing itself, not with -seed
+printf -- '-1 1 -1 0\n1\n4\n-1 0\n-0.2 0\n0 -0.3\n1 0\n' >groove.plot
+printf -- '-1 1 -1 0\n1\n3\n-1 0\n0 -0.3\n0.5 0\n' >short.plot
+printf -- '-1 1 -1 0\n1\n5\n-1 0\n0.5 -0.5\n0.5 -0.2\n-0.5 -0.5\n1 0\n' >cross.plot
+printf -- '-1 1 -1 0\n2\n2\n-1 0\n1 0\n2\n-1 -0.5\n1 -0.5\n' >two.plot
+usage_error etch2d -et 1 -start groove.plot -seed 0 0 r2.bin
+for f in short cross two; do
+	expect_error etch2d -et 1 -start $f.plot -o out.plot r2.bin
+	grep -q "^etch2d: $f.plot:1: " err.txt || fail "-start $f.plot: $(cat err.txt)"
+done
 [ -e out.plot ] && fail "a refused run left out.plot"
+# a profile written right to left is the same profile
+awk 'NR <= 3 { print; next } { l[NR] = $0 } END { for (i = NR; i > 3; i--) print l[i] }' \
+	groove.plot >reversed.plot
+for m in raystring cell fmm; do
+	etch2d -et 0.3 -method $m -start groove.plot -o g1.plot r2.bin || fail "-start $m failed"
+	etch2d -et 0.3 -method $m -start reversed.plot -o g2.plot r2.bin || fail "-start $m reversed"
+	same g1.plot g2.plot
+done
 expect_error etch -et 1 r2.bin
 grep -q "etch2d" err.txt || fail "etch does not point at etch2d: $(cat err.txt)"
 

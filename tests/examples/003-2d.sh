@@ -21,6 +21,7 @@ for d in defect-cutlines/north-south defect-cutlines/east-west elbow-cutline; do
 done
 for f in fig3.3-cells25 fig3.3-cells100 fig3.3-cells200 fig4.2-huygens10 fig4.2-huygens40 \
 	fig6.4-string0.1 fig6.4-string0.02 fig7.7-raystring fig3.4-cell fig3.4-string \
+	fig6.5-string fig6.5-string-fine fig6.5-raystring fig6.5-ray fig6.5-fmm \
 	fig4.4a-huygens fig4.5b-huygens fig6.13-ray fig7.19-raystring fig6.20-ray fig7.21-raystring \
 	table10.1-raystring table10.1-string table10.1-ray table10.1-cell table10.1-huygens table10.1-fmm; do
 	[ -s "algorithms/$f.plot" ] || fail "algorithms: no $f.plot"
