@@ -82,6 +82,9 @@ void source_init(struct source *s, const struct splat_input *in, double cutoff);
 struct quad {
 	int nouter, ninner;
 	double *uo, *wo, *ui, *wi;  /* nodes and weights on [-1, 1] */
+	/* across, with t = uo pi/2: sin t, cos t and wo pi/2, computed once
+	 * here instead of in every pair (source_disc3_planes) */
+	double *so, *co, *wco;
 };
 void quad_init(struct quad *q, int nouter, int ninner);
 void quad_free(struct quad *q);
