@@ -133,6 +133,30 @@ size_t fft_work_size(const struct fft_plan *p)
 	return m + fft_work_size(p->fwd);
 }
 
+/* re + i im (C11's CMPLX is missing from some compilers' headers; a
+ * complex has the layout of two doubles) */
+static inline double complex mkc(double re, double im)
+{
+	union { double complex z; double d[2]; } u;
+	u.d[0] = re;
+	u.d[1] = im;
+	return u.z;
+}
+
+/* a b without the C library's care for infinities (the values here are
+ * finite) */
+static inline double complex cmul(double complex a, double complex b)
+{
+	double ar = creal(a), ai = cimag(a), br = creal(b), bi = cimag(b);
+	return mkc(ar * br - ai * bi, ar * bi + ai * br);
+}
+
+/* sign i a */
+static inline double complex rot(double complex a, double sg)
+{
+	return mkc(-sg * cimag(a), sg * creal(a));
+}
+
 /* out[0 .. n-1] = transform of in[0], in[s], .., in[(n-1) s], n = the
  * product of fac[0], fac[2], ..; fs the twiddle stride (N / n). */
 static void work(const struct fft_plan *pl, double complex *out, const double complex *in,
@@ -148,38 +172,72 @@ static void work(const struct fft_plan *pl, double complex *out, const double co
 	}
 	const double complex *tw = pl->tw;
 	size_t N = pl->n;
-	if (p == 2) {
+	double sg = pl->sign;
+	switch (p) {
+	case 2:
 		for (size_t u = 0; u < m; u++) {
-			double complex a = out[u], b = out[u + m] * tw[u * fs];
+			double complex a = out[u], b = cmul(out[u + m], tw[u * fs]);
 			out[u] = a + b;
 			out[u + m] = a - b;
 		}
 		return;
+	case 3: {
+		/* w = -1/2 + sign i sqrt(3)/2 */
+		const double h = 0.86602540378443864676;
+		for (size_t u = 0; u < m; u++) {
+			double complex y0 = out[u];
+			double complex y1 = cmul(out[u + m], tw[u * fs]);
+			double complex y2 = cmul(out[u + 2 * m], tw[2 * u * fs]);
+			double complex t = y1 + y2, mid = y0 - 0.5 * t;
+			double complex d = h * rot(y1 - y2, sg);
+			out[u] = y0 + t;
+			out[u + m] = mid + d;
+			out[u + 2 * m] = mid - d;
+		}
+		return;
 	}
-	if (p == 4) {
-		/* multiplication by sign i */
-		double sg = pl->sign;
+	case 4:
 		for (size_t u = 0; u < m; u++) {
 			double complex a0 = out[u];
-			double complex a1 = out[u + m] * tw[u * fs];
-			double complex a2 = out[u + 2 * m] * tw[2 * u * fs];
-			double complex a3 = out[u + 3 * m] * tw[3 * u * fs];
+			double complex a1 = cmul(out[u + m], tw[u * fs]);
+			double complex a2 = cmul(out[u + 2 * m], tw[2 * u * fs]);
+			double complex a3 = cmul(out[u + 3 * m], tw[3 * u * fs]);
 			double complex s02 = a0 + a2, d02 = a0 - a2;
-			double complex s13 = a1 + a3, d13 = a1 - a3;
-			double complex r = sg * (-cimag(d13) + I * creal(d13));   /* sign i d13 */
+			double complex s13 = a1 + a3, r = rot(a1 - a3, sg);
 			out[u] = s02 + s13;
 			out[u + m] = d02 + r;
 			out[u + 2 * m] = s02 - s13;
 			out[u + 3 * m] = d02 - r;
 		}
 		return;
+	case 5: {
+		/* cos and sin of 2 pi / 5 and 4 pi / 5 */
+		const double c1 = 0.30901699437494742410, c2 = -0.80901699437494742410;
+		const double s1 = 0.95105651629515357212, s2 = 0.58778525229247312917;
+		for (size_t u = 0; u < m; u++) {
+			double complex y0 = out[u];
+			double complex y1 = cmul(out[u + m], tw[u * fs]);
+			double complex y2 = cmul(out[u + 2 * m], tw[2 * u * fs]);
+			double complex y3 = cmul(out[u + 3 * m], tw[3 * u * fs]);
+			double complex y4 = cmul(out[u + 4 * m], tw[4 * u * fs]);
+			double complex a = y1 + y4, b = y2 + y3, c = y1 - y4, d = y2 - y3;
+			double complex e1 = y0 + c1 * a + c2 * b, e2 = y0 + c2 * a + c1 * b;
+			double complex f1 = rot(s1 * c + s2 * d, sg), f2 = rot(s2 * c - s1 * d, sg);
+			out[u] = y0 + a + b;
+			out[u + m] = e1 + f1;
+			out[u + 4 * m] = e1 - f1;
+			out[u + 2 * m] = e2 + f2;
+			out[u + 3 * m] = e2 - f2;
+		}
+		return;
+	}
 	}
 	/* general radix p (odd, at most FFT_MAX_RADIX) */
 	double complex y[FFT_MAX_RADIX];
 	size_t step = N / p;                /* tw[step] = exp(sign 2 pi i / p) */
 	for (size_t u = 0; u < m; u++) {
 		for (size_t q = 0; q < p; q++)
-			y[q] = out[u + q * m] * tw[(q * u * fs) % N];
+			y[q] = cmul(out[u + q * m], tw[q * u * fs]);
 		for (size_t q1 = 0; q1 < p; q1++) {
 			double complex acc = y[0];
 			size_t e = 0;
@@ -187,7 +245,7 @@ static void work(const struct fft_plan *pl, double complex *out, const double co
 				e += q1 * step;
 				if (e >= N)
 					e -= N;
-				acc += y[q] * tw[e];
+				acc += cmul(y[q], tw[e]);
 			}
 			out[u + q1 * m] = acc;
 		}
@@ -207,15 +265,15 @@ void fft_exec(const struct fft_plan *p, double complex *x, double complex *w)
 	size_t m = fft_length(p->fwd);
 	double complex *a = w, *sub = w + m;
 	for (size_t j = 0; j < n; j++)
-		a[j] = x[j] * p->chirp[j];
+		a[j] = cmul(x[j], p->chirp[j]);
 	for (size_t j = n; j < m; j++)
 		a[j] = 0;
 	fft_exec(p->fwd, a, sub);
 	for (size_t j = 0; j < m; j++)
-		a[j] *= p->bhat[j];
+		a[j] = cmul(a[j], p->bhat[j]);
 	fft_exec(p->bwd, a, sub);
 	for (size_t k = 0; k < n; k++)
-		x[k] = p->chirp[k] * a[k] / (double)m;
+		x[k] = cmul(p->chirp[k], a[k]) / (double)m;
 }
 
 size_t fft_work2_size(const struct fft_plan *px, const struct fft_plan *py)

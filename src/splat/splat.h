@@ -136,10 +136,38 @@ extern int splat_quiet;
 struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ninner,
 				int *norders);
 
+/* Abbe (abbe.c): the same spectrum as a sum over source points of
+ * coherent images, by FFT.  The source points are the centres of square
+ * cells of side h (1/um); ABBE_CELLS across the smallest source disc by
+ * default. */
+enum { ABBE_CELLS = 40 };
+double abbe_cell_default(const struct pupil *p, const struct source *s);
+/* The part of a square of side h, centre at signed distance d inside a
+ * straight edge of unit normal (ux, uy). */
+double abbe_cover(double d, double ux, double uy, double h);
+/* The nodes (sx, sy) in 1/um and their signed weights (cell area times
+ * the source's cover); returns their count (only the count when sx is
+ * NULL). */
+int abbe_nodes(const struct source *s, double h, double *sx, double *sy, double *w);
+struct spectrum *abbe_spectrum(const struct orders *o, const struct pupil *p,
+			       const struct source *s, double h);
+
+/* The imaging method: -method hopkins|abbe|auto (auto: the cheaper by
+ * splat_estimate). */
+enum splat_method { SPLAT_AUTO, SPLAT_HOPKINS, SPLAT_ABBE };
+/* As splat_spectrum by method (not SPLAT_AUTO); for abbe, nouter is the
+ * number of cells across the smallest source disc (0: the default). */
+struct spectrum *splat_spectrum_method(const struct splat_input *in, enum splat_method method,
+				       int nouter, int ninner, int *norders);
+
 /* The work of a run estimated from its input (estimate.c): orders and
  * pairs of orders, seconds and bytes. */
 void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 		    double *seconds, double *bytes);
+
+/* The same for the Abbe method: source cells, seconds and bytes. */
+void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *seconds,
+			 double *bytes);
 
 /* Intensity at one point, and on the contour grid (z[j*nx + i]). */
 double image_at(const struct spectrum *sp, double x, double y);
