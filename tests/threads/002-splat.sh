@@ -1,11 +1,10 @@
 # splat's output does not depend on the thread count (issue 15): a 5 um
 # window at i-line NA 0.6 sigma 0.5 (481 orders: the pair loop's rows
-# split at 64 pairs, the Abbe FFT's 49 columns and 100 rows at 8, the
+# split at 64 pairs, the Abbe FFT's 25 columns and 50 rows at 8, the
 # image's rows in blocks of 16 per thread), with a cutline and, in a
 # second input (2.5 um, 121 orders: its pair rows too short to split, its
-# FFTs and image rows split), a two-plane image stack with defocus
-# and coma; both
-# methods with 1, 2 and 3 threads (-threads, and SAMPLE3D_THREADS once),
+# FFTs and image rows split), a two-plane image stack with defocus and
+# coma; both methods with 1, 2 and 3 threads (-threads, and SAMPLE3D_THREADS once),
 # every output compared byte for byte.  The two methods differ (the
 # Abbe source cells), so they are also checked not to be byte-identical
 # to each other (the method option is really used).
