@@ -8,6 +8,7 @@
  * among threads, each row computed alone.  Rounding can leave
  * -1e-17 where the intensity |E|^2 is zero; it is clamped to 0.
  */
+#include "fft.h"
 #include "splat.h"
 #include "par.h"
 #include "progress.h"
@@ -105,4 +106,83 @@ void image_grid(const struct spectrum *sp, double xmin, double xmax, double ymin
 	}
 	free(ex);
 	free(scratch);
+}
+
+/* image_grid_fft: the spectrum folded onto the grid's period, then one
+ * inverse 2D FFT, rows and then columns shared among threads */
+struct fold_job {
+	const struct fft_plan *plan;
+	double complex *g;
+	size_t nx, ny;          /* the period's points */
+	double complex **work;  /* per worker */
+};
+
+static void fold_rows(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct fold_job *f = ctx;
+	for (size_t j = lo; j < hi; j++)
+		fft_exec(f->plan, f->g + j * f->nx, f->work[worker]);
+}
+
+static void fold_cols(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct fold_job *f = ctx;
+	double complex *col = f->work[worker], *sub = col + f->ny;
+	for (size_t i = lo; i < hi; i++) {
+		for (size_t j = 0; j < f->ny; j++)
+			col[j] = f->g[j * f->nx + i];
+		fft_exec(f->plan, col, sub);
+		for (size_t j = 0; j < f->ny; j++)
+			f->g[j * f->nx + i] = col[j];
+	}
+}
+
+void image_grid_fft(const struct spectrum *sp, double xmin, double ymin, int nx, int ny,
+		    double *z)
+{
+	size_t w = 4 * (size_t)sp->mmax + 1, h = 4 * (size_t)sp->nmax + 1;
+	size_t px = (size_t)nx - 1, py = (size_t)ny - 1;
+	double complex *g = xcalloc(px * py, sizeof *g);
+	double complex *ex = xreallocarray(NULL, w + h, sizeof *ex), *ey = ex + w;
+	for (size_t im = 0; im < w; im++)
+		ex[im] = cis(2 * M_PI * ((double)im - 2 * sp->mmax) * xmin / sp->lx);
+	for (size_t jn = 0; jn < h; jn++)
+		ey[jn] = cis(2 * M_PI * ((double)jn - 2 * sp->nmax) * ymin / sp->ly);
+	/* A(dm, dn) at the bin (dm mod px, dn mod py): the sum at grid point
+	 * (i, j) is then exactly the image there, aliasing or not */
+	for (size_t jn = 0; jn < h; jn++) {
+		long dn = (long)jn - 2 * sp->nmax;
+		size_t j = (size_t)(((dn % (long)py) + (long)py) % (long)py);
+		for (size_t im = 0; im < w; im++) {
+			double complex a = sp->a[jn * w + im];
+			if (a == 0)
+				continue;
+			long dm = (long)im - 2 * sp->mmax;
+			size_t i = (size_t)(((dm % (long)px) + (long)px) % (long)px);
+			g[j * px + i] += a * ex[im] * ey[jn];
+		}
+	}
+	struct fft_plan *fx = fft_plan_new(px, 1), *fy = fft_plan_new(py, 1);
+	int nt = par_threads();
+	size_t nw = py + (fft_work_size(fx) > fft_work_size(fy) ? fft_work_size(fx)
+							       : fft_work_size(fy));
+	double complex **work = xreallocarray(NULL, (size_t)nt, sizeof *work);
+	for (int t = 0; t < nt; t++)
+		work[t] = xreallocarray(NULL, nw, sizeof **work);
+	struct fold_job f = {fx, g, px, py, work};
+	par_for(py, 8, fold_rows, &f);
+	f.plan = fy;
+	par_for(px, 8, fold_cols, &f);
+	for (size_t j = 0; j < (size_t)ny; j++)
+		for (size_t i = 0; i < (size_t)nx; i++) {
+			double s = creal(g[(j % py) * px + i % px]);
+			z[j * (size_t)nx + i] = s > 0 ? s : 0;
+		}
+	for (int t = 0; t < nt; t++)
+		free(work[t]);
+	free(work);
+	fft_plan_free(fx);
+	fft_plan_free(fy);
+	free(ex);
+	free(g);
 }

@@ -132,6 +132,18 @@ static void write_cutline(const struct spectrum *sp, const struct splat_cutline 
 	free(p);
 }
 
+/* The image on the output grid, which spans one period: by the direct
+ * sums of the exact method (whose output stays byte for byte what it
+ * was), by FFT with the Abbe method. */
+static void grid(const struct spectrum *sp, enum splat_method method,
+		 const struct splat_mask *m, int nx, int ny, double *z)
+{
+	if (method == SPLAT_ABBE)
+		image_grid_fft(sp, m->xmin, m->ymin, nx, ny, z);
+	else
+		image_grid(sp, m->xmin, m->xmax, m->ymin, m->ymax, nx, ny, z);
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
@@ -213,8 +225,7 @@ int main(int argc, char **argv)
 						       in->resist_index, c);
 		for (int k = 0; k < st->n; k++) {
 			struct spectrum v = spectrum_plane(sp, k);
-			image_grid(&v, m->xmin, m->xmax, m->ymin, m->ymax, in->nx, in->ny,
-				   st->plane[k]->z);
+			grid(&v, method, m, in->nx, in->ny, st->plane[k]->z);
 		}
 		fmt_stack_write(out, st);
 		fmt_stack_free(st);
@@ -223,7 +234,7 @@ int main(int argc, char **argv)
 				"%g um of resist of index %g\n", out, in->planes,
 				in->resist_thick, in->resist_index);
 	} else {
-		image_grid(sp, m->xmin, m->xmax, m->ymin, m->ymax, in->nx, in->ny, c->z);
+		grid(sp, method, m, in->nx, in->ny, c->z);
 		fmt_contour_write(out, c);
 		if (!o.quiet)
 			fprintf(stderr, "splat: wrote %s\n", out);

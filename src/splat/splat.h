@@ -173,5 +173,12 @@ void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *se
 double image_at(const struct spectrum *sp, double x, double y);
 void image_grid(const struct spectrum *sp, double xmin, double xmax, double ymin,
 		double ymax, int nx, int ny, double *z);
+/* The same when the grid spans exactly one period (xmax = xmin + lx, ymax
+ * = ymin + ly, as splat's output grid does), by one inverse FFT of the
+ * spectrum folded onto the nx - 1 by ny - 1 points of the period: cost
+ * about nx ny log(nx ny) instead of (4M+1) nx ny; equal to image_grid to
+ * rounding, not byte for byte (the -method abbe output uses it). */
+void image_grid_fft(const struct spectrum *sp, double xmin, double ymin, int nx, int ny,
+		    double *z);
 
 #endif
