@@ -38,6 +38,9 @@ struct orders {
  * (1/(Lx Ly)) integral over the window of t e^{i phase} e^{-2 pi i f.r}. */
 struct orders *mask_orders(const struct splat_mask *m, double fmax);
 void mask_orders_free(struct orders *o);
+/* The distinct rect edges along x (axis 0) or y (1), window ends
+ * included: the cells mask_orders sums over are their products. */
+int mask_edge_count(const struct splat_mask *m, int axis);
 
 struct pupil {
 	double lambda, na;
