@@ -106,11 +106,14 @@ double abbe_cell_default(const struct pupil *p, const struct source *s)
 	double cells = ABBE_CELLS + 4 * ceil(2 * M_PI * p->waves);
 	if (cells > 4 * ABBE_CELLS)
 		cells = 4 * ABBE_CELLS;
-	double dmin = INFINITY;
+	/* across the smallest source disc, and no coarser than that across
+	 * the pupil's radius (the pupil edges set the error where the source
+	 * is large: sigma 0.5 is both) */
+	double dmin = p->cutoff;
 	for (int k = 0; k < s->ndisc; k++)
 		if (2 * s->r[k] < dmin)
 			dmin = 2 * s->r[k];
-	return s->coherent || !(dmin < INFINITY) ? 1 : dmin / cells;
+	return s->coherent ? 1 : dmin / cells;
 }
 
 int abbe_nodes(const struct source *s, double h, double *sx, double *sy, double *w)

@@ -141,8 +141,8 @@ struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ni
 
 /* Abbe (abbe.c): the same spectrum as a sum over source points of
  * coherent images, by FFT.  The source points are the centres of square
- * cells of side h (1/um); ABBE_CELLS across the smallest source disc by
- * default. */
+ * cells of side h (1/um); by default ABBE_CELLS across the smallest
+ * source disc or across the pupil's radius, whichever is smaller. */
 enum { ABBE_CELLS = 40 };
 double abbe_cell_default(const struct pupil *p, const struct source *s);
 /* The part of a square of side h, centre at signed distance d inside a

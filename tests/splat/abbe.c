@@ -10,8 +10,8 @@
  *      source point, so the two agree to rounding (1e-12);
  *   4. partially coherent, every source shape and the pupil phases: a
  *      dark-field contact, lines and spaces, a polygon with a defect, an
- *      annular, a quadrupole and a dipole source, defocus with coma and
- *      spherical aberration, a three-plane image stack (resist
+ *      annular, a quadrupole, a dipole and a sigma 1.3 source, defocus
+ *      with coma and spherical aberration, a three-plane image stack (resist
  *      statement): max |I_abbe - I_hopkins| < 1e-3 (issue 15; with the
  *      default source cells it is about 1e-4; printed), and 4 times
  *      finer cells come 4 times closer (the error is second order in the
@@ -159,6 +159,8 @@ static void test_partial(void)
 		{"quadrupole", "wavelength 0.365\nna 0.6\nquadrupole 0.6 0.2\n"
 			       "window -1 1 -1 1\nrect -0.25 -1 0.25 1\nrect -1 -0.25 1 0.25\n"
 			       "grid 21 21\n"},
+		{"source wider than the pupil", "wavelength 0.365\nna 0.6\nsigma 1.3\n"
+			  "window -1 1 -1 1\nrect -0.3 -0.3 0.3 0.3\ngrid 21 21\n"},
 		{"dipole", "wavelength 0.365\nna 0.6\ndipole 0.7 0.2 x\n"
 			   "window 0 1.2 0 0.6\nrect 0 0 0.3 0.6\ngrid 25 13\n"},
 		{"defocus and aberrations", "wavelength 0.365\nna 0.5\nsigma 0.5\ndefocus 0.6\n"
