@@ -38,6 +38,7 @@
  * source points in the same order whatever the thread count, so the
  * result is byte-identical for any count.
  */
+#include "checked.h"
 #include "fft.h"
 #include "par.h"
 #include "progress.h"
@@ -238,9 +239,9 @@ struct spectrum *abbe_spectrum(const struct orders *o, const struct pupil *p,
 	size_t wd = 4 * (size_t)o->mmax + 1, ht = 4 * (size_t)o->nmax + 1;
 	struct fft_plan *px = fft_plan_new(kx, 1), *py = fft_plan_new(ky, 1);
 	struct fft_plan *fx = fft_plan_new(kx, -1), *fy = fft_plan_new(ky, -1);
-	size_t grid = kx * ky;
+	size_t grid = ck_mul(kx, ky, "Abbe FFT grid");
 	double complex *e = xreallocarray(NULL, grid, sizeof *e);
-	double *acc = xcalloc(grid * (size_t)np, sizeof *acc);
+	double *acc = xcalloc(ck_mul(grid, (size_t)np, "Abbe FFT grid planes"), sizeof *acc);
 	int nt = par_threads();
 	size_t nw = ky + (fft_work_size(px) > fft_work_size(py) ? fft_work_size(px)
 							   : fft_work_size(py));

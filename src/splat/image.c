@@ -8,6 +8,7 @@
  * among threads, each row computed alone.  Rounding can leave
  * -1e-17 where the intensity |E|^2 is zero; it is clamped to 0.
  */
+#include "checked.h"
 #include "fft.h"
 #include "splat.h"
 #include "par.h"
@@ -142,7 +143,7 @@ void image_grid_fft(const struct spectrum *sp, double xmin, double ymin, int nx,
 {
 	size_t w = 4 * (size_t)sp->mmax + 1, h = 4 * (size_t)sp->nmax + 1;
 	size_t px = (size_t)nx - 1, py = (size_t)ny - 1;
-	double complex *g = xcalloc(px * py, sizeof *g);
+	double complex *g = xcalloc(ck_mul(px, py, "image grid"), sizeof *g);
 	double complex *ex = xreallocarray(NULL, w + h, sizeof *ex), *ey = ex + w;
 	for (size_t im = 0; im < w; im++)
 		ex[im] = cis(2 * M_PI * ((double)im - 2 * sp->mmax) * xmin / sp->lx);
