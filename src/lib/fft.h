@@ -7,7 +7,7 @@
  * unnormalised both ways (a forward and a backward transform multiply by
  * n).  Lengths whose prime factors are all at most FFT_MAX_RADIX run as a
  * mixed-radix Cooley-Tukey decimation in time (special butterflies for
- * 2 and 4, a general one for 3, 5, 7, ...); any other length (97, say)
+ * 2, 3, 4 and 5, a general one for 7, 11, 13); any other length (97, say)
  * runs as Bluestein's chirp-z convolution on a power-of-two length.  Cost
  * about n log n either way; rounding about 1e-16 log n relative to the
  * largest |X|.
