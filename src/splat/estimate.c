@@ -14,6 +14,13 @@
  * microsecond a number.  The per-operation times were measured on the
  * development machine (a 2020 x86-64 core): the estimate is meant to be
  * right within a factor of a few, which is all a limit of an hour needs.
+ *
+ * The Abbe method (abbe.c) costs, per source cell and image plane, the
+ * coefficients placed in the pupil (one test an order) and an FFT of the
+ * Kx x Ky grid, Kx ~ 4M + 1, of which only the 2M + 1 columns holding
+ * orders need the column pass: about area x log(area) a cell, with the
+ * cell count fixed by the source shape alone.  splat -method auto runs
+ * the method with the smaller estimate.
  */
 #include "splat.h"
 
@@ -23,6 +30,65 @@
  * integrated pair; per complex product of the image sums; per number
  * written (measured, see above) */
 static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 1e-6;
+/* per row of a flat pupil's source integral (the row's sine and cosine
+ * precomputed: issue 15) */
+static const double T_ROW = 1.3e-8;
+
+/* Abbe (abbe.c): per source cell and plane, one pass over the orders, a
+ * column and a row pass of FFTs (seconds per point and log2 of the
+ * length) and the accumulation; per order of a cell; measured as above. */
+static const double T_FFT = 6e-10, T_ORDER = 3e-9, T_ACC = 1e-9;
+
+static double nice(double n)
+{
+	/* the FFT length (abbe.c's nice_length) is within 10 % of n above 100 */
+	return n * 1.1 + 8;
+}
+
+void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *seconds,
+			 double *bytes)
+{
+	struct pupil p;
+	struct source s;
+	pupil_init(&p, in);
+	source_init(&s, in, p.cutoff);
+	const struct splat_mask *m = &in->mask;
+	double lx = m->xmax - m->xmin, ly = m->ymax - m->ymin;
+	double fm = (p.cutoff + s.smax) * (1 + 1e-9);
+	double M = floor(fm * lx), N = floor(fm * ly);
+	double nrect = (2 * M + 1) * (2 * N + 1);
+	double n = fmin(nrect, M_PI * fm * fm * lx * ly + 2 * (M + N) + 1);
+	double h = abbe_cell_default(&p, &s), ns = 0;
+	if (s.coherent)
+		ns = 1;
+	else
+		for (int k = 0; k < s.ndisc; k++)
+			if (s.sign[k] > 0)
+				ns += M_PI * s.r[k] * s.r[k] / (h * h) + 2 * M_PI * s.r[k] / h + 1;
+	double kx = nice(4 * M + 1), ky = nice(4 * N + 1);
+	double np = p.nplanes;
+	double per = (2 * M + 1) * ky * log2(ky) * T_FFT + kx * ky * log2(kx) * T_FFT
+		   + kx * ky * T_ACC + n * T_ORDER;
+	double w = 4 * M + 1, hh = 4 * N + 1;
+	double cx = mask_edge_count(m, 0) - 1, cy = mask_edge_count(m, 1) - 1;
+	double cells = cx * cy;
+	double pts = (double)in->nx * in->ny, cut = 0;
+	for (int k = 0; k < in->ncutlines; k++)
+		cut += in->cutlines[k].npts;
+	/* the grid by one FFT per plane (image_grid_fft), cutlines summed */
+	double grid = (double)in->nx * in->ny;
+	*nodes = ns;
+	*seconds = ns * np * per + np * kx * ky * log2(kx * ky) * T_FFT
+		 + np * grid * log2(grid + 1) * T_FFT + w * hh * np * cut * T_IMAGE
+		 + cells * (2 * N + 1) * T_IMAGE + cx * nrect * T_IMAGE
+		 + (pts + cut) * np * T_OUT;
+	pts += cut;
+	/* the field's grid, the planes' sums, a work row per thread, the
+	 * spectra, the coefficients, the image and its phasors */
+	*bytes = kx * ky * (16 + 8 * np) + 64 * (kx + ky) * 16 + w * hh * 16 * np
+		 + nrect * (16 + 56) + cells * 16 + cy * (2 * N + 1) * 16
+		 + pts * 8 * np + grid * 16;
+}
 
 void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 		    double *seconds, double *bytes)
@@ -43,9 +109,16 @@ void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 	double r2 = 2 * p.cutoff;
 	double near = fmin(n, M_PI * r2 * r2 * lx * ly + 2 * (r2 * lx + r2 * ly) + 1);
 	double integrated = n * near / 2;
+	/* quadrature points of a pair, in units of T_QUAD: with a flat pupil
+	 * a row's integral is its length (source.c), about three pieces of
+	 * nouter rows a disc, each row about T_ROW */
 	double per = s.coherent ? 1 : (double)s.ndisc * nouter * ninner;
+	if (!s.coherent && p.flat && p.nplanes == 1)
+		per = (double)s.ndisc * nouter * 3 * (T_ROW / T_QUAD);
 	double w = 4 * M + 1, h = 4 * N + 1;
-	double cells = (2.0 * m->nrects + 1) * (2.0 * m->nrects + 1);
+	/* the cells of the rects' distinct edges (mask.c) */
+	double cx = mask_edge_count(m, 0) - 1, cy = mask_edge_count(m, 1) - 1;
+	double cells = cx * cy;
 	double pts = (double)in->nx * in->ny;
 	for (int k = 0; k < in->ncutlines; k++)
 		pts += in->cutlines[k].npts;
@@ -53,11 +126,11 @@ void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 	*pairs = tried;
 	*seconds = tried * T_PAIR + integrated * per * T_QUAD
 		 + (w * h * in->ny + w * pts) * T_IMAGE
-		 + cells * (2 * N + 1) * T_IMAGE + (2 * m->nrects + 1) * nrect * T_IMAGE
+		 + cells * (2 * N + 1) * T_IMAGE + cx * nrect * T_IMAGE
 		 + pts * T_OUT;
 	/* coefficients of the rectangle of orders and the kept lists (56 bytes
 	 * an order), the spectrum, the cells, the image and its phasors */
 	*bytes = nrect * (16 + 56) + w * h * 16 + cells * 16
-		 + (2.0 * m->nrects + 1) * (2 * N + 1) * 16
+		 + cy * (2 * N + 1) * 16
 		 + pts * 8 + w * in->nx * 16;
 }

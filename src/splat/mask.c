@@ -68,6 +68,14 @@ static int edges(const struct splat_mask *m, int axis, double lo, double hi, dou
 	return k;
 }
 
+int mask_edge_count(const struct splat_mask *m, int axis)
+{
+	double *e;
+	int n = edges(m, axis, axis ? m->ymin : m->xmin, axis ? m->ymax : m->xmax, &e);
+	free(e);
+	return n;
+}
+
 /* Index of v in the sorted array e (v is one of its values). */
 static int find(const double *e, int n, double v)
 {

@@ -120,6 +120,15 @@ void quad_init(struct quad *q, int nouter, int ninner)
 	q->wi = xreallocarray(NULL, (size_t)ninner, sizeof *q->wi);
 	quad_gauss(nouter, q->uo, q->wo);
 	quad_gauss(ninner, q->ui, q->wi);
+	q->so = xreallocarray(NULL, (size_t)nouter, sizeof *q->so);
+	q->co = xreallocarray(NULL, (size_t)nouter, sizeof *q->co);
+	q->wco = xreallocarray(NULL, (size_t)nouter, sizeof *q->wco);
+	for (int i = 0; i < nouter; i++) {
+		double t = q->uo[i] * (M_PI / 2);
+		q->so[i] = sin(t);
+		q->co[i] = cos(t);
+		q->wco[i] = q->wo[i] * (M_PI / 2);
+	}
 }
 
 void quad_free(struct quad *q)
@@ -128,6 +137,9 @@ void quad_free(struct quad *q)
 	free(q->wo);
 	free(q->ui);
 	free(q->wi);
+	free(q->so);
+	free(q->co);
+	free(q->wco);
 }
 
 /* Gauss-Legendre integrates exp(i phi) to rounding once it has a few
@@ -220,9 +232,9 @@ void source_disc3_planes(const struct pupil *p, const struct quad *q,
 			continue;
 		double mid = 0.5 * (y0 + y1), half = 0.5 * (y1 - y0);
 		for (int io = 0; io < q->nouter; io++) {
-			double t = q->uo[io] * (M_PI / 2);
-			double y = mid + half * sin(t);
-			double wy = q->wo[io] * (M_PI / 2) * half * cos(t);
+			/* y = mid + half sin t, dy = half cos t dt (quad_init) */
+			double y = mid + half * q->so[io];
+			double wy = q->wco[io] * half * q->co[io];
 			double a = -INFINITY, b = INFINITY;
 			for (int i = 0; i < nc; i++) {
 				double dy = y - ccy[i], e = rr[i] * rr[i] - dy * dy;

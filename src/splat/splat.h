@@ -38,6 +38,9 @@ struct orders {
  * (1/(Lx Ly)) integral over the window of t e^{i phase} e^{-2 pi i f.r}. */
 struct orders *mask_orders(const struct splat_mask *m, double fmax);
 void mask_orders_free(struct orders *o);
+/* The distinct rect edges along x (axis 0) or y (1), window ends
+ * included: the cells mask_orders sums over are their products. */
+int mask_edge_count(const struct splat_mask *m, int axis);
 
 struct pupil {
 	double lambda, na;
@@ -82,6 +85,9 @@ void source_init(struct source *s, const struct splat_input *in, double cutoff);
 struct quad {
 	int nouter, ninner;
 	double *uo, *wo, *ui, *wi;  /* nodes and weights on [-1, 1] */
+	/* across, with t = uo pi/2: sin t, cos t and wo pi/2, computed once
+	 * here instead of in every pair (source_disc3_planes) */
+	double *so, *co, *wco;
 };
 void quad_init(struct quad *q, int nouter, int ninner);
 void quad_free(struct quad *q);
@@ -133,14 +139,49 @@ extern int splat_quiet;
 struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ninner,
 				int *norders);
 
+/* Abbe (abbe.c): the same spectrum as a sum over source points of
+ * coherent images, by FFT.  The source points are the centres of square
+ * cells of side h (1/um); by default ABBE_CELLS across the smallest
+ * source disc or across the pupil's radius, whichever is smaller. */
+enum { ABBE_CELLS = 40 };
+double abbe_cell_default(const struct pupil *p, const struct source *s);
+/* The part of a square of side h, centre at signed distance d inside a
+ * straight edge of unit normal (ux, uy). */
+double abbe_cover(double d, double ux, double uy, double h);
+/* The nodes (sx, sy) in 1/um and their signed weights (cell area times
+ * the source's cover); returns their count (only the count when sx is
+ * NULL). */
+int abbe_nodes(const struct source *s, double h, double *sx, double *sy, double *w);
+struct spectrum *abbe_spectrum(const struct orders *o, const struct pupil *p,
+			       const struct source *s, double h);
+
+/* The imaging method: -method hopkins|abbe|auto (auto: the cheaper by
+ * splat_estimate). */
+enum splat_method { SPLAT_AUTO, SPLAT_HOPKINS, SPLAT_ABBE };
+/* As splat_spectrum by method (not SPLAT_AUTO); for abbe, nouter is the
+ * number of cells across the smallest source disc (0: the default). */
+struct spectrum *splat_spectrum_method(const struct splat_input *in, enum splat_method method,
+				       int nouter, int ninner, int *norders);
+
 /* The work of a run estimated from its input (estimate.c): orders and
  * pairs of orders, seconds and bytes. */
 void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 		    double *seconds, double *bytes);
 
+/* The same for the Abbe method: source cells, seconds and bytes. */
+void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *seconds,
+			 double *bytes);
+
 /* Intensity at one point, and on the contour grid (z[j*nx + i]). */
 double image_at(const struct spectrum *sp, double x, double y);
 void image_grid(const struct spectrum *sp, double xmin, double xmax, double ymin,
 		double ymax, int nx, int ny, double *z);
+/* The same when the grid spans exactly one period (xmax = xmin + lx, ymax
+ * = ymin + ly, as splat's output grid does), by one inverse FFT of the
+ * spectrum folded onto the nx - 1 by ny - 1 points of the period: cost
+ * about nx ny log(nx ny) instead of (4M+1) nx ny; equal to image_grid to
+ * rounding, not byte for byte (the -method abbe output uses it). */
+void image_grid_fft(const struct spectrum *sp, double xmin, double ymin, int nx, int ny,
+		    double *z);
 
 #endif

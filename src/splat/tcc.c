@@ -17,6 +17,7 @@
  * and a clear mask gives exactly 1 at every depth.
  */
 #include "splat.h"
+#include "par.h"
 #include "progress.h"
 #include "util.h"
 
@@ -59,6 +60,34 @@ static void tcc(const struct pupil *p, const struct source *s,
 
 int splat_quiet = 1;
 
+/* The TCCs of the pairs (i, j) for j in a range of one row i of the pair
+ * loop, computed by the threads into tb[(j - i) np + k]; the row is then
+ * added to the spectra in order of j by one thread, so that every sum is
+ * made in the same order whatever the thread count. */
+struct row_job {
+	const struct orders *o;
+	const struct pupil *p;
+	const struct source *s;
+	const struct quad *q;
+	int i;
+	double complex *tb;
+	double complex **scratch;       /* per worker */
+};
+
+static void row_tccs(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct row_job *r = ctx;
+	const struct orders *o = r->o;
+	int np = r->p->nplanes, i = r->i;
+	for (size_t jj = lo; jj < hi; jj++) {
+		int j = i + (int)jj;
+		if (o->c[j] == 0)
+			continue;
+		tcc(r->p, r->s, r->q, o->fx[i], o->fy[i], o->fx[j], o->fy[j],
+		    r->tb + jj * (size_t)np, r->scratch[worker]);
+	}
+}
+
 /* Below this the source sends no light through the pupil (an annulus or
  * poles entirely outside NA): relative to the area of the pupil. */
 static const double NORM_MIN = 1e-12;
@@ -95,6 +124,13 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 	sp->nmax = o->nmax;
 	sp->nplanes = np;
 	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
+	int nt = par_threads();
+	double complex **scratch = xreallocarray(NULL, (size_t)nt, sizeof *scratch);
+	for (int k = 0; k < nt; k++)
+		scratch[k] = xreallocarray(NULL, 2 * (size_t)np + 2 * (size_t)q->ninner,
+					   sizeof **scratch);
+	double complex *tb = xreallocarray(NULL, (size_t)o->n * np, sizeof *tb);
+	struct row_job rj = {o, p, s, q, 0, tb, scratch};
 	struct progress prog;
 	progress_begin(&prog, "TCC pairs", splat_quiet);
 	for (int i = 0; i < o->n; i++) {
@@ -103,10 +139,14 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      (double)o->n * (o->n + 1) / 2);
 		if (o->c[i] == 0)
 			continue;
+		rj.i = i;
+		par_for((size_t)(o->n - i), 64, row_tccs, &rj);
 		for (int j = i; j < o->n; j++) {
 			if (o->c[j] == 0)
 				continue;
-			tcc(p, s, q, o->fx[i], o->fy[i], o->fx[j], o->fy[j], t, row);
+			const double complex *tt = tb + (size_t)(j - i) * np;
+			for (int k = 0; k < np; k++)
+				t[k] = tt[k];
 			sp->pairs++;
 			int dm = o->m[i] - o->m[j], dn = o->k[i] - o->k[j];
 			size_t at = (size_t)(dn + 2 * o->nmax) * w + (size_t)(dm + 2 * o->mmax);
@@ -122,6 +162,10 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			}
 		}
 	}
+	for (int k = 0; k < nt; k++)
+		free(scratch[k]);
+	free(scratch);
+	free(tb);
 	free(t);
 	return sp;
 }
@@ -145,20 +189,34 @@ void spectrum_free(struct spectrum *sp)
 struct spectrum *splat_spectrum(const struct splat_input *in, int nouter, int ninner,
 				int *norders)
 {
+	return splat_spectrum_method(in, SPLAT_HOPKINS, nouter, ninner, norders);
+}
+
+struct spectrum *splat_spectrum_method(const struct splat_input *in, enum splat_method method,
+				       int nouter, int ninner, int *norders)
+{
 	struct pupil p;
 	struct source s;
-	struct quad q;
 	pupil_init(&p, in);
 	source_init(&s, in, p.cutoff);
-	if (nouter <= 0 || ninner <= 0)
-		quad_default(&p, &nouter, &ninner);
-	quad_init(&q, nouter, ninner);
 	/* an order reaches the pupil from some source point if |f + s| < NA/lambda */
 	struct orders *o = mask_orders(&in->mask, p.cutoff + s.smax);
 	if (norders)
 		*norders = o->n;
-	struct spectrum *sp = tcc_spectrum(o, &p, &s, &q);
+	struct spectrum *sp;
+	if (method == SPLAT_ABBE) {
+		double h = abbe_cell_default(&p, &s);
+		if (nouter > 0 && !s.coherent)
+			h *= abbe_cell_default(&p, &s) > 0 ? (double)ABBE_CELLS / nouter : 1;
+		sp = abbe_spectrum(o, &p, &s, h);
+	} else {
+		struct quad q;
+		if (nouter <= 0 || ninner <= 0)
+			quad_default(&p, &nouter, &ninner);
+		quad_init(&q, nouter, ninner);
+		sp = tcc_spectrum(o, &p, &s, &q);
+		quad_free(&q);
+	}
 	mask_orders_free(o);
-	quad_free(&q);
 	return sp;
 }
