@@ -49,8 +49,11 @@ struct plot_file *fmt_plot_read(const char *path, int dim)
 		lex_error(lx, "empty plot file: expected %s", bound_names[0]);
 	while (!lex_at_end(lx)) {
 		double b[6];
-		for (int k = 0; k < 2 * dim; k++)
+		for (int k = 0; k < 2 * dim; k++) {
 			b[k] = lex_number(lx, bound_names[k]);
+			if (!pf->first_line)
+				pf->first_line = lex_lineno(lx);
+		}
 		struct plot_set *s = fmt_plot_add_set(pf, b);
 		long nc = lex_count(lx, "ncurves", 0, PLOT_MAX_COUNT);
 		for (long c = 0; c < nc; c++) {

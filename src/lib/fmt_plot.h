@@ -42,6 +42,8 @@ struct plot_file {
 	struct plot_set *sets;
 	size_t cap;
 	struct plot_labels labels;  /* from the head of the file; "" unset */
+	long first_line;            /* fmt_plot_read: the line of the first
+				     * number (1 without comment lines) */
 };
 
 struct plot_file *fmt_plot_new(int dim);

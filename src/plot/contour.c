@@ -499,7 +499,7 @@ int main(int argc, char **argv)
 	double zmin = INFINITY, zmax = -INFINITY;
 	if (o.tri) {
 		pf = fmt_plot_read(o.input, 3);
-		long line = 1;
+		long line = pf->first_line;     /* after any comment lines */
 		for (int si = 0; si < pf->nsets; si++) {
 			line += 2;
 			for (int ci = 0; ci < pf->sets[si].ncurves; ci++) {
