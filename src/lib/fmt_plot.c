@@ -101,8 +101,12 @@ void fmt_plot_labels(struct plot_writer *w, const struct plot_labels *l)
 		return;
 	if (w->nsets)
 		die("%s: internal error: labels after the first set", w->path);
-	if (l)
-		fmt_labels_put(w->a->f, l);
+	if (!l)
+		return;
+	struct plot_labels c = *l;
+	if (w->dim == 2)
+		c.axis[2][0] = '\0';   /* a 2D file has no z label to read back */
+	fmt_labels_put(w->a->f, &c);
 }
 
 static void check_set_done(const struct plot_writer *w)

@@ -60,8 +60,8 @@ void fmt_plot_free(struct plot_file *pf);
 /* Streaming writer. */
 struct plot_writer;
 struct plot_writer *fmt_plot_open(const char *path, int dim);
-/* Writes the labels line (nothing if w or l is NULL or l is empty); only
- * before the first set. */
+/* Writes the labels line (nothing if w or l is NULL or l is empty; a 2D
+ * file drops a z label); only before the first set. */
 void fmt_plot_labels(struct plot_writer *w, const struct plot_labels *l);
 /* Starts a set: its bounds and how many curves will follow. */
 void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurves);
