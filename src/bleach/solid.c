@@ -46,6 +46,7 @@ long solid_write(const char *path, const double *f, int nx, int ny, int nz,
 	struct tris t = {NULL, 0, 0};
 	iso_surface(f, nx, ny, nz, bounds, level, 1, keep_tri, &t);
 	struct plot_writer *w = fmt_plot_open(path, 3);
+	fmt_plot_labels(w, fmt_labels_std(LABELS_PAC));
 	fmt_plot_begin_set(w, bounds, (long)t.n);
 	fmt_plot_curves(w, t.n, 4, tri_curve, &t);
 	fmt_plot_close(w);

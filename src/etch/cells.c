@@ -189,6 +189,8 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 	}
 	struct plot_writer *w3 = o->out3d ? fmt_plot_open(o->out3d, 3) : NULL;
 	struct plot_writer *w2 = o->out2d ? fmt_plot_open(o->out2d, 2) : NULL;
+	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
+	fmt_plot_labels(w2, fmt_labels_std(LABELS_TOPVIEW));
 	/* print times: pt, 2 pt, ... below et, then et */
 	double pt = o->pt > 0 ? o->pt : o->et, t = 0;
 	long nprint = (long)floor(o->et / pt + 1e-9);

@@ -138,6 +138,8 @@ void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
 	struct fmm *f = coarse_view(fine);
 	struct plot_writer *w3 = path3d ? fmt_plot_open(path3d, 3) : NULL;
 	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
+	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
+	fmt_plot_labels(w2, fmt_labels_std(LABELS_TOPVIEW));
 	struct tris tr = {NULL, 0, 0};
 	for (int k = 0; k < ntimes; k++) {
 		tr.n = 0;

@@ -405,6 +405,7 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 		int other = 1 - o->cut_axis;
 		double bc[4] = {f->lo[other], f->hi[other], f->lo[2], f->hi[2]};
 		struct plot_file *pf = fmt_plot_new(2);
+		pf->labels = *fmt_labels_std(o->cut_axis == 0 ? LABELS_CUT_X : LABELS_CUT_Y);
 		for (int k = first; k < n; k++)
 			fmm_cut(fm, times[k], o->cut_axis, o->cut_value, pf, bc);
 		fmt_plot_write(o->outcut, pf);

@@ -46,9 +46,12 @@ struct etch_out *out_open(const struct etch_opts *o, const struct rfield *f)
 		w->w3 = fmt_plot_open(o->out3d, 3);
 	if (o->out2d)
 		w->w2 = fmt_plot_open(o->out2d, 2);
+	fmt_plot_labels(w->w3, fmt_labels_std(LABELS_SURFACE));
+	fmt_plot_labels(w->w2, fmt_labels_std(LABELS_TOPVIEW));
 	if (o->cut_axis >= 0 && o->outcut) {
 		int other = 1 - o->cut_axis;
 		w->cut = fmt_plot_new(2);
+		w->cut->labels = *fmt_labels_std(o->cut_axis == 0 ? LABELS_CUT_X : LABELS_CUT_Y);
 		w->cutpath = o->outcut;
 		w->axis = o->cut_axis;
 		w->value = o->cut_value;

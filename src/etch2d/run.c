@@ -52,6 +52,7 @@ void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o)
 	}
 	e->tp[e->ntp++] = o->et;
 	e->pf = fmt_plot_new(2);
+	e->pf->labels = *fmt_labels_std(LABELS_PROFILE2D);
 	if (o->start)
 		e2_start_init(e);
 }

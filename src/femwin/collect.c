@@ -71,6 +71,7 @@ static void write_bossung(const struct fem_table *t, const char *plot_path,
 	}
 	if (plot_path) {
 		struct plot_file *pf = fmt_plot_new(2);
+		fmt_labels_set(&pf->labels, "Bossung curves", "focus (um)", "CD (um)", NULL);
 		struct plot_set *s = fmt_plot_add_set(pf, b);
 		double *xy = xreallocarray(NULL, (size_t)t->n * 2, sizeof *xy);
 		for (int k = 0; k < nd; k++) {

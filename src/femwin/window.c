@@ -331,6 +331,7 @@ static void write_region(const struct grid *g, const struct fem_window_row *r5, 
 {
 	double b[4] = {g->F[0], g->F[g->nf - 1], g->D[0], g->D[g->nd - 1]};
 	struct plot_file *pf = fmt_plot_new(2);
+	fmt_labels_set(&pf->labels, "In-spec region", "focus (um)", "dose (mJ/cm2)", NULL);
 	struct plot_set *set = fmt_plot_add_set(pf, b);
 	const struct fem_window_row *rr[2] = {r5, r10};
 	int have[2] = {have5, have10};
@@ -474,6 +475,7 @@ void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
 	fmt_fem_window_write(window_path, rows, n);
 	if (plot_path) {
 		struct plot_file *pf = fmt_plot_new(2);
+		fmt_labels_set(&pf->labels, "Process window", "EL (%)", "DOF (um)", NULL);
 		double b[4] = {0, n > 0 ? rows[n - 1].el : 1, 0, 0};
 		for (int k = 0; k < n; k++)
 			b[3] = fmax(b[3], rows[k].dof);

@@ -102,12 +102,15 @@ struct contour *fmt_contour_parse(struct lex *lx, const char *first, int old)
 struct contour *fmt_contour_read(const char *path, int old)
 {
 	struct lex *lx = lex_open(path);
+	struct plot_labels lab;
+	fmt_labels_read(lx, &lab, 1);
 	const char *t = lex_token(lx);
 	/* an image stack (stack.5) starts with its keyword: say what it is
 	 * rather than "expected xmin" */
 	if (t && strcasecmp(t, "stack") == 0)
 		lex_error(lx, "an image stack (see stack(5)), not a single contour-file");
 	struct contour *c = fmt_contour_parse(lx, t, old);
+	c->labels = lab;
 	if (lex_token(lx)) {
 		size_t want = (size_t)c->nx * (size_t)c->ny;
 		fmt_contour_free(c);
@@ -137,6 +140,7 @@ void fmt_contour_put(FILE *f, const struct contour *c)
 void fmt_contour_write(const char *path, const struct contour *c)
 {
 	struct aout *a = aout_open(path);
+	fmt_labels_put(a->f, &c->labels);
 	fmt_contour_put(a->f, c);
 	aout_commit(a);
 }

@@ -10,10 +10,14 @@
  * The -old format is a 50x50 grid with first line "xmin ymin xlength
  * ylength" and no counts.  See man/man5/contour.5.  A file starting with
  * the word "stack" is an image stack (fmt_stack.h), which this reader
- * refuses by name.
+ * refuses by name.  '#' lines at the head are comments; one "# labels
+ * ..." line carries the title and the x, y and value (z) labels
+ * (fmt_labels.h).
  */
 #ifndef S3D_FMT_CONTOUR_H
 #define S3D_FMT_CONTOUR_H
+
+#include "fmt_labels.h"
 
 #include <stdio.h>
 
@@ -23,6 +27,7 @@ struct contour {
 	double xmin, xmax, ymin, ymax;
 	int nx, ny;
 	double *z;          /* z[j*nx + i] at (x_i, y_j) */
+	struct plot_labels labels;  /* fmt_contour_read/write only; "" unset */
 };
 
 struct contour *fmt_contour_new(double xmin, double xmax, double ymin,

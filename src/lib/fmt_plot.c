@@ -44,12 +44,16 @@ struct plot_file *fmt_plot_read(const char *path, int dim)
 {
 	struct lex *lx = lex_open(path);
 	struct plot_file *pf = fmt_plot_new(dim);
+	fmt_labels_read(lx, &pf->labels, dim == 3);
 	if (lex_at_end(lx))
 		lex_error(lx, "empty plot file: expected %s", bound_names[0]);
 	while (!lex_at_end(lx)) {
 		double b[6];
-		for (int k = 0; k < 2 * dim; k++)
+		for (int k = 0; k < 2 * dim; k++) {
 			b[k] = lex_number(lx, bound_names[k]);
+			if (!pf->first_line)
+				pf->first_line = lex_lineno(lx);
+		}
 		struct plot_set *s = fmt_plot_add_set(pf, b);
 		long nc = lex_count(lx, "ncurves", 0, PLOT_MAX_COUNT);
 		for (long c = 0; c < nc; c++) {
@@ -89,6 +93,20 @@ struct plot_writer *fmt_plot_open(const char *path, int dim)
 	w->dim = dim;
 	w->path = xstrdup(path);
 	return w;
+}
+
+void fmt_plot_labels(struct plot_writer *w, const struct plot_labels *l)
+{
+	if (!w)
+		return;
+	if (w->nsets)
+		die("%s: internal error: labels after the first set", w->path);
+	if (!l)
+		return;
+	struct plot_labels c = *l;
+	if (w->dim == 2)
+		c.axis[2][0] = '\0';   /* a 2D file has no z label to read back */
+	fmt_labels_put(w->a->f, &c);
 }
 
 static void check_set_done(const struct plot_writer *w)
@@ -186,6 +204,7 @@ void fmt_plot_close(struct plot_writer *w)
 void fmt_plot_write(const char *path, const struct plot_file *pf)
 {
 	struct plot_writer *w = fmt_plot_open(path, pf->dim);
+	fmt_plot_labels(w, &pf->labels);
 	for (int s = 0; s < pf->nsets; s++) {
 		const struct plot_set *set = &pf->sets[s];
 		fmt_plot_begin_set(w, set->bounds, set->ncurves);

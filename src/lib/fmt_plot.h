@@ -9,13 +9,16 @@
  * Sets follow each other, separated by a blank line when written.  Counts
  * may be written as "4.0"; commas may separate numbers (image.cont of
  * contour -c writes "xmin, xmax, ymin, ymax").  See man/man5/plot3d.5
- * and plot2d.5.
+ * and plot2d.5.  '#' lines at the head of the file are comments; one
+ * "# labels ..." line carries the title and axis labels (fmt_labels.h).
  *
  * Two ways to write: build a struct plot_file and call fmt_plot_write,
  * or stream large outputs (etch) set by set with fmt_plot_open.
  */
 #ifndef S3D_FMT_PLOT_H
 #define S3D_FMT_PLOT_H
+
+#include "fmt_labels.h"
 
 #include <stddef.h>
 
@@ -38,6 +41,9 @@ struct plot_file {
 	int nsets;
 	struct plot_set *sets;
 	size_t cap;
+	struct plot_labels labels;  /* from the head of the file; "" unset */
+	long first_line;            /* fmt_plot_read: the line of the first
+				     * number (1 without comment lines) */
 };
 
 struct plot_file *fmt_plot_new(int dim);
@@ -54,6 +60,9 @@ void fmt_plot_free(struct plot_file *pf);
 /* Streaming writer. */
 struct plot_writer;
 struct plot_writer *fmt_plot_open(const char *path, int dim);
+/* Writes the labels line (nothing if w or l is NULL or l is empty; a 2D
+ * file drops a z label); only before the first set. */
+void fmt_plot_labels(struct plot_writer *w, const struct plot_labels *l);
 /* Starts a set: its bounds and how many curves will follow. */
 void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurves);
 void fmt_plot_curve(struct plot_writer *w, int npts, const double *p);

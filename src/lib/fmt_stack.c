@@ -92,6 +92,8 @@ static int same_grid(const struct contour *a, const struct contour *b)
 struct image_stack *fmt_stack_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
+	struct plot_labels lab;         /* a plain contour-file's (contour.5) */
+	fmt_labels_read(lx, &lab, 1);
 	const char *t = lex_token(lx);
 	struct image_stack *s = reading = xcalloc(1, sizeof *s);
 	if (!t || strcasecmp(t, "stack") != 0) {
@@ -101,6 +103,7 @@ struct image_stack *fmt_stack_read(const char *path)
 		s->depth = xcalloc(1, sizeof *s->depth);
 		s->plane = xcalloc(1, sizeof *s->plane);
 		s->plane[0] = c;
+		c->labels = lab;
 		if (lex_token(lx))
 			lex_error(lx, "unexpected data after the %zu z values",
 				  (size_t)c->nx * (size_t)c->ny);

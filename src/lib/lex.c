@@ -204,6 +204,24 @@ int lex_at_end(struct lex *lx)
 	return lx->pos >= lx->len;
 }
 
+const char *lex_comment(struct lex *lx)
+{
+	skip_sep(lx);
+	if (lx->pos >= lx->len || lx->buf[lx->pos] != '#')
+		return NULL;
+	size_t start = ++lx->pos;
+	while (lx->pos < lx->len && lx->buf[lx->pos] != '\n')
+		lx->pos++;
+	size_t n = lx->pos - start;
+	lx->line = lx->nextline;
+	if (memchr(lx->buf + start, '\0', n))
+		lex_error(lx, "NUL byte in the line (a binary file?)");
+	xgrow(&lx->lbuf, &lx->lbufcap, n + 1, 1);
+	memcpy(lx->lbuf, lx->buf + start, n);
+	lx->lbuf[n] = '\0';
+	return lx->lbuf;
+}
+
 /* A token quoted for a message: printable, at most 24 characters. */
 static const char *shown(const char *t, char *out, size_t cap)
 {

@@ -49,6 +49,12 @@ long lex_count(struct lex *lx, const char *what, long min, long max);
  * whether token i was quoted (NULL allowed). */
 int lex_line(struct lex *lx, char ***tokens, const int **quoted);
 
+/* Token readers: if the next non-blank input starts with '#', the rest
+ * of that line after the '#' (valid until the next call; the line is
+ * consumed and becomes the current line); NULL otherwise, nothing
+ * consumed.  For the comment lines a numeric format allows at its head. */
+const char *lex_comment(struct lex *lx);
+
 /* Dies with "prog: file:line: message" at the current line. */
 _Noreturn void lex_error(const struct lex *lx, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));

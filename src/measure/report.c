@@ -82,6 +82,9 @@ void report_plot(const struct options *o, const struct surf *s, const struct res
 	/* x: the resist's heights; y: from 0 to a tenth above the largest cd */
 	double bounds[4] = {s->box[4], s->box[5], 0, cdmax > 0 ? 1.1 * cdmax : 1};
 	struct plot_writer *w = fmt_plot_open(o->plot, 2);
+	struct plot_labels lab;
+	fmt_labels_set(&lab, "CD through the resist height", "z (um)", "CD (um)", NULL);
+	fmt_plot_labels(w, &lab);
 	fmt_plot_begin_set(w, bounds, 1);
 	fmt_plot_curve(w, r->nrows, p);
 	fmt_plot_close(w);

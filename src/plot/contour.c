@@ -499,7 +499,7 @@ int main(int argc, char **argv)
 	double zmin = INFINITY, zmax = -INFINITY;
 	if (o.tri) {
 		pf = fmt_plot_read(o.input, 3);
-		long line = 1;
+		long line = pf->first_line;     /* after any comment lines */
 		for (int si = 0; si < pf->nsets; si++) {
 			line += 2;
 			for (int ci = 0; ci < pf->sets[si].ncurves; ci++) {
@@ -535,6 +535,10 @@ int main(int argc, char **argv)
 		if (o.ex)
 			write_mesh(g, o.input);
 	}
+
+	/* the labels the input carries are the defaults (contour.5) */
+	const struct plot_labels *lab = pf ? &pf->labels : &g->labels;
+	plot_settings_labels(&c.s, lab, spec, val, &o.cmd);
 
 	if (o.has_level) {
 		c.levels = xmalloc(sizeof *c.levels);
@@ -598,6 +602,8 @@ int main(int argc, char **argv)
 	if (o.has_level) {
 		/* image.cont: the single level in the 2D plot format */
 		struct plot_file *out = fmt_plot_new(2);
+		/* its curves lie in the input's x-y plane: its title, x and y */
+		fmt_labels_set(&out->labels, lab->title, lab->axis[0], lab->axis[1], NULL);
 		for (int pi = 0; pi < c.npages; pi++) {
 			struct plot_set *st = fmt_plot_add_set(out, c.pages[pi].bounds);
 			for (int i = 0; i < c.pages[pi].ncurves; i++)

@@ -118,6 +118,7 @@ int main(int argc, char **argv)
 	zrange(c, &b[4], &b[5]);
 
 	struct plot_writer *w = fmt_plot_open(outname, 3);
+	fmt_plot_labels(w, &c->labels);        /* the labels travel (contour.5) */
 	if (o.triangles) {
 		long n = 2L * (c->nx - 1) * (c->ny - 1);
 		fmt_plot_begin_set(w, b, n);

@@ -387,6 +387,12 @@ int main(int argc, char **argv)
 	for (int i = 0; i < o.nfiles; i++)
 		c.pf[i] = fmt_plot_read(o.files[i], 2);
 
+	/* the first file that carries labels gives the default ones */
+	for (int i = 0; i < o.nfiles; i++)
+		if (!fmt_labels_empty(&c.pf[i]->labels)) {
+			plot_settings_labels(&c.s, &c.pf[i]->labels, spec, val, &o.cmd);
+			break;
+		}
 	plot_output(&c.s, &o.cmd, render, NULL, &c);
 
 	for (int i = 0; i < o.nfiles; i++)

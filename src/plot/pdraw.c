@@ -944,6 +944,12 @@ int main(int argc, char **argv)
 			c.sets[c.nsets++] = &pf[i]->sets[s];
 	}
 
+	/* the first file that carries labels gives the default ones */
+	for (int i = 0; i < o.nfiles; i++)
+		if (!fmt_labels_empty(&pf[i]->labels)) {
+			plot_settings_labels(&c.s, &pf[i]->labels, spec, val, &o.cmd);
+			break;
+		}
 	plot_output(&c.s, &o.cmd, render, key, &c);
 
 	for (int i = 0; i < o.nfiles; i++)

@@ -275,3 +275,23 @@ void plot_output(const struct plot_settings *s, const struct plot_cmd *c,
 	else if (s->printplot)
 		die("-print needs the PostScript plot, which -ps or POSTSCRIPT=OFF turned off");
 }
+
+/* One label: the file's if neither the options-file nor the command line
+ * gave one. */
+static void file_label(const char **dst, const char *text, const struct opt_spec *spec,
+		       const struct opt_value *val, const char *key, const char *cmd)
+{
+	if (!text[0] || cmd || (spec && val && plot_opt(spec, val, key)))
+		return;
+	*dst = text;
+}
+
+void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
+			  const struct opt_spec *spec, const struct opt_value *val,
+			  const struct plot_cmd *c)
+{
+	file_label(&s->toplabel, l->title, spec, val, "toplabel", c->tl);
+	file_label(&s->xlabel, l->axis[0], spec, val, "xlabel", c->xl);
+	file_label(&s->ylabel, l->axis[1], spec, val, "ylabel", c->yl);
+	file_label(&s->zlabel, l->axis[2], spec, val, "zlabel", c->zl);
+}

@@ -13,6 +13,7 @@
 #include "args.h"
 #include "draw.h"
 #include "draw_x11.h"
+#include "fmt_labels.h"
 #include "fmt_options.h"
 
 /* Which of the common options a program takes. */
@@ -69,6 +70,14 @@ const struct opt_value *plot_opt(const struct opt_spec *spec,
  * of the common keywords, and the command line. */
 void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
 			   const struct opt_value *val, const struct plot_cmd *c);
+
+/* The labels an input file carries (fmt_labels.h) replace the built-in
+ * defaults: a label the options-file or the command line sets wins, an
+ * empty one in l changes nothing.  Call after plot_settings_resolve; l
+ * must outlive s. */
+void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
+			  const struct opt_spec *spec, const struct opt_value *val,
+			  const struct plot_cmd *c);
 
 /* Builds the picture; called again after a key changes the view. */
 typedef struct draw *(*plot_render)(void *ctx);

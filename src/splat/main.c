@@ -109,6 +109,7 @@ static void write_cutline(const struct spectrum *sp, const struct splat_cutline 
 	double len = hypot(c->x2 - c->x1, c->y2 - c->y1);
 	double lo = 0, hi = 0;
 	struct plot_file *pf = fmt_plot_new(2);
+	pf->labels = *fmt_labels_std(LABELS_CUTLINE);
 	/* the graph spans at least 0..1, clear-field intensity */
 	double b[4] = {0, len, 0, 1};
 	struct plot_set *set = fmt_plot_add_set(pf, b);
@@ -219,6 +220,7 @@ int main(int argc, char **argv)
 
 	struct contour *c = fmt_contour_new(m->xmin, m->xmax, m->ymin, m->ymax,
 					    in->nx, in->ny);
+	c->labels = *fmt_labels_std(LABELS_IMAGE);
 	if (in->planes) {
 		/* the image stack (stack.5): plane k at depth k T/(N-1) */
 		struct image_stack *st = fmt_stack_new(in->planes, in->resist_thick,

@@ -30,6 +30,8 @@ same first.plot.2D curves.plot.2D
 etch -et 1.5 -pt 0.25 -seg 0.1 -q rate.txt || fail "ASCII run"
 same first.plot curves.plot
 # the 2D file holds the x y of the 3D file's points, set by set
-awk 'NF == 3 { print $1, $2 } NF == 6 { print $1, $2, $3, $4 } NF <= 1 { print }' first.plot >proj.txt
-same proj.txt first.plot.2D
+# (each file's '#' labels line aside: plot3d(5), plot2d(5))
+awk '/^#/ { next } NF == 3 { print $1, $2 } NF == 6 { print $1, $2, $3, $4 } NF <= 1 { print }' first.plot >proj.txt
+grep -v '^#' first.plot.2D >first2.txt
+same proj.txt first2.txt
 exit 0

@@ -4,21 +4,12 @@
 # through a triangle it does not touch, found by the deloop pass's own
 # spatial index after the last pass).  Examples that develop by fast
 # marching (-method fmm in their run.sh) have no mesh and are passed over.
+# The checks are tests/lib/examples.sh's; the longest examples (its
+# EXAMPLES_OWN) are tests of their own, 006 and 007, so that the runner
+# spreads them over the cores; this test takes every other 3D example.
 . "$TOP/tests/lib/common.sh"
-for run in "$TOP"/examples/*/run.sh; do
-	name=$(basename "$(dirname "$run")")
-	# an example developed by fast marching has no mesh to deloop
-	if grep -q -- '-method fmm' "$run"; then
-		echo "$name: fast marching, nothing to deloop"
-		continue
-	fi
-	# the 2D examples (sample2D, etch2d) are tests/examples/003-2d.sh's
-	grep -q 'sample2D\|etch2d' "$run" && continue
-	OUT=$PWD/$name sh "$run" -deloop >"$name.log" 2>&1 || fail "example $name -deloop failed: $(tail -n 3 "$name.log")"
-	runs=$(grep -c 'etch: deloop:' "$name.log")
-	[ "$runs" -gt 0 ] || fail "example $name: no deloop summary"
-	clean=$(grep 'etch: deloop:' "$name.log" | grep -c ' 0 crossings left')
-	[ "$clean" -eq "$runs" ] || fail "example $name: loops left: $(grep 'etch: deloop:' "$name.log" | grep -v ' 0 crossings left' | head -n 2)"
-	echo "$name: $runs runs, all loop-free"
+. "$TOP/tests/lib/examples.sh"
+for name in $(examples_rest); do
+	example_deloop "$name"
 done
 exit 0

@@ -48,11 +48,14 @@ drawplot -noplot -ps window.2D || fail "drawplot cannot read window.2D"
 femwin -target 0.5 -tol 10 -o w2.dat -region region.2D -region-template region.tpl fem.dat >/dev/null ||
 	fail "femwin -region failed"
 drawplot -noplot -ps -t region.tpl region.2D || fail "drawplot cannot read region.2D"
-[ "$(sed -n 2p region.2D)" = 3 ] || fail "region.2D: expected 3 curves, found $(sed -n 2p region.2D)"
+# (line 1 is its labels line, plot2d(5))
+[ "$(sed -n 1p region.2D)" = '# labels title "In-spec region" x "focus (um)" y "dose (mJ/cm2)"' ] ||
+	fail "region.2D labels: $(sed -n 1p region.2D)"
+[ "$(sed -n 3p region.2D)" = 3 ] || fail "region.2D: expected 3 curves, found $(sed -n 3p region.2D)"
 grep -q 'label = "in spec"' region.tpl || fail "region.tpl labels"
 awk -v row="$(awk '$1 == 5' window.dat)" 'BEGIN { split(row, r, " "); h = 0.025
 	f1 = r[3] - r[2] / 2; d1 = r[4] * (1 - h) }
-	NR == 4 { exit !(($1 - f1)^2 < 1e-12 && ($2 - d1)^2 < 1e-8) }' region.2D ||
+	NR == 5 { exit !(($1 - f1)^2 < 1e-12 && ($2 - d1)^2 < 1e-8) }' region.2D ||
 	fail "region.2D: the 5 % rectangle does not start at window.dat's corner"
 # deterministic
 femwin -target 0.5 -tol 10 -o again.dat fem.dat >/dev/null || fail "second run"

@@ -33,7 +33,7 @@ function depth(t,   lo, hi, mid, k) {   # solve -z + z^2/4 = t on [-1, 0]
 	return (lo + hi) / 2
 }
 BEGIN { split("0 0.3 0.8 2", T, " "); set = 0; state = "bounds" }
-NF == 0 { next }
+NF == 0 || /^#/ { next }
 state == "bounds" {
 	set++
 	if ($0 != "0 0.4 0 0.3 -1 0") { print "set " set ": bounds " $0; bad++ }
@@ -58,5 +58,7 @@ END {
 }' c.plot || fail "curves.plot does not match T(z) = -z + z^2/4"
 
 # the 2D file: the 3D file with z dropped (bounds: the x-y box)
-awk 'NF == 6 { print $1, $2, $3, $4; next } NF == 3 { print $1, $2; next } { print }' c.plot >proj.txt
-same proj.txt c.plot.2D
+# (each file's '#' labels line aside: plot3d(5), plot2d(5))
+awk '/^#/ { next } NF == 6 { print $1, $2, $3, $4; next } NF == 3 { print $1, $2; next } { print }' c.plot >proj.txt
+grep -v '^#' c.plot.2D >c2.txt
+same proj.txt c2.txt

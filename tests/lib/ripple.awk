@@ -2,6 +2,7 @@
 # contact: points with x > 0 and zlo < z < zhi of the curve with most such points;
 # prints the excess total variation of x along the wall, sum |dx| - |x_last - x_first|
 # (um; 0 for a monotone wall) and the number of wall points used.
+/^#/ { next }            # the labels line (plot2d(5))
 NF == 0 { set++; n = 0; next }
 { line[set, ++n] = $0 }
 END {

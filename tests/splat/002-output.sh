@@ -30,9 +30,16 @@ grep -v contour in.txt >nocontour.txt
 splat -q nocontour.txt || fail "splat without contour statement failed"
 same splat.cont named.cont
 # the 21st cutline point is (0, 0), the grid centre (index 20, row 20)
-c=$(awk 'NR == 24 { print $2 }' cut.2D)
-g=$(awk 'NR > 2 { for (i = 1; i <= NF; i++) v[n++] = $i } END { print v[20 * 41 + 20] }' named.cont)
+# (the '#' labels line at the head of each file is skipped: plot2d(5), contour(5))
+c=$(grep -v '^#' cut.2D | awk 'NR == 24 { print $2 }')
+g=$(grep -v '^#' named.cont | awk 'NR > 2 { for (i = 1; i <= NF; i++) v[n++] = $i } END { print v[20 * 41 + 20] }')
 close "$c" "$g" 1e-12 "cutline vs grid at the centre"
 # the header: window and grid
-head -2 named.cont | tr '\n' ' ' | grep -q "^-2 2 -2 2 41 41" || fail "bad header: $(head -2 named.cont)"
+grep -v '^#' named.cont | head -2 | tr '\n' ' ' | grep -q "^-2 2 -2 2 41 41" ||
+	fail "bad header: $(head -3 named.cont)"
+# the labels line (contour(5), plot2d(5)) first, in micrometres
+head -1 named.cont | grep -qx '# labels title "Aerial image" x "x (um)" y "y (um)" z "intensity (clear field = 1)"' ||
+	fail "contour-file labels: $(head -1 named.cont)"
+head -1 cut.2D | grep -qx '# labels title "Aerial image along a cutline" x "distance along the cut (um)" y "intensity (clear field = 1)"' ||
+	fail "cutline labels: $(head -1 cut.2D)"
 exit 0

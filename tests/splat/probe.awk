@@ -8,6 +8,7 @@
 #   xcentroid           intensity-weighted mean x over the grid
 # Used by the splat example tests.
 BEGIN { OFMT = "%.12g" }
+/^#/ { next }    # comment and labels lines (contour.5)
 { for (i = 1; i <= NF; i++) v[n++] = $i }
 END {
 	gsub(",", " ", v[0]);

@@ -1,3 +1,4 @@
+# labels title "Developed resist surface" x "x (um)" y "y (um)" z "z (um)"
 -1.5 1.5 -1.5 1.5 -0.7 0
 304
 4

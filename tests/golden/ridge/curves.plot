@@ -1,3 +1,4 @@
+# labels title "Developed resist surface" x "x (um)" y "y (um)" z "z (um)"
 -1 1 -0.2 0.2 -1 0
 225
 4

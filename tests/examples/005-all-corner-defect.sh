@@ -1,0 +1,7 @@
+# examples/corner-defect runs end to end as 001-all.sh checks it
+# (tests/lib/examples.sh, example_all): one of the longest examples, a
+# test of its own so that the runner can run it beside the others.
+. "$TOP/tests/lib/common.sh"
+. "$TOP/tests/lib/examples.sh"
+example_all corner-defect
+exit 0

@@ -1,0 +1,67 @@
+# tests/lib/examples.sh - the checks of the 3D example tests
+# (tests/examples/*), shared so that the longest examples can run as tests
+# of their own, which the parallel runner spreads over the cores; source it
+# after common.sh.
+#
+# The 3D examples are examples/*/run.sh except the 2D ones (sample2D,
+# etch2d: 003-2d.sh's).  Those in EXAMPLES_OWN have tests of their own
+# (examples/004-007); 001-all.sh and 002-deloop.sh take every other one, so
+# an example added later is covered without a new test.
+EXAMPLES_OWN="defect corner-defect"
+
+# examples_rest: the 3D examples not in EXAMPLES_OWN, one name a line.
+examples_rest() {
+	for _run in "$TOP"/examples/*/run.sh; do
+		_name=$(basename "$(dirname "$_run")")
+		grep -q 'sample2D\|etch2d' "$_run" && continue
+		case " $EXAMPLES_OWN " in *" $_name "*) continue ;; esac
+		echo "$_name"
+	done
+}
+
+# example_all NAME: examples/NAME runs end to end through its run.sh
+# (sample3D: splat, bleach, etch, pdraw) and leaves, in every run
+# directory, a non-empty curves.plot that reads back as a plot file with
+# one set per print time, its curves.plot.2D, and a dataplot.ps with a page
+# per set that ghostscript renders (when installed).
+example_all() {
+	_run=$TOP/examples/$1/run.sh
+	[ -f "$_run" ] || fail "no example $1"
+	OUT=$PWD/$1 sh "$_run" -q >"$1.log" 2>&1 || fail "example $1 failed: $(tail -n 3 "$1.log")"
+	_n=0
+	for _plot in $(find "$1" -name curves.plot | sort); do
+		_d=$(dirname "$_plot")
+		[ -s "$_d/curves.plot.2D" ] || fail "$_d: curves.plot.2D missing"
+		[ -s "$_d/dataplot.ps" ] || fail "$_d: dataplot.ps missing"
+		PATH=$BUILD/tests/lib:$PATH fmtcat plot3 "$_plot" check.plot || fail "$_plot does not read back"
+		_sets=$(($(grep -c '^$' "$_plot") + 1))
+		_pages=$(grep -c '^%%Page: ' "$_d/dataplot.ps")
+		[ "$_sets" -eq "$_pages" ] || fail "$_d: $_sets sets but $_pages pages"
+		if command -v gs >/dev/null; then gs_check "$_d/dataplot.ps"; fi
+		_n=$((_n + 1))
+	done
+	[ $_n -gt 0 ] || fail "example $1 produced no curves.plot"
+	echo "$1: $_n runs"
+}
+
+# example_deloop NAME: examples/NAME also runs with -deloop (passed by its
+# run.sh through sample3D to etch) and every etch run ends with a
+# loop-free mesh: its summary reports "0 crossings left" (etch(1):
+# crossings of a segment through a triangle it does not touch, found by
+# the deloop pass's own spatial index after the last pass).  An example
+# developed by fast marching (-method fmm in its run.sh) has no mesh and
+# is passed over.
+example_deloop() {
+	_run=$TOP/examples/$1/run.sh
+	[ -f "$_run" ] || fail "no example $1"
+	if grep -q -- '-method fmm' "$_run"; then
+		echo "$1: fast marching, nothing to deloop"
+		return 0
+	fi
+	OUT=$PWD/$1 sh "$_run" -deloop >"$1.log" 2>&1 || fail "example $1 -deloop failed: $(tail -n 3 "$1.log")"
+	_runs=$(grep -c 'etch: deloop:' "$1.log")
+	[ "$_runs" -gt 0 ] || fail "example $1: no deloop summary"
+	_clean=$(grep 'etch: deloop:' "$1.log" | grep -c ' 0 crossings left')
+	[ "$_clean" -eq "$_runs" ] || fail "example $1: loops left: $(grep 'etch: deloop:' "$1.log" | grep -v ' 0 crossings left' | head -n 2)"
+	echo "$1: $_runs runs, all loop-free"
+}
