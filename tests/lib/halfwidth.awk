@@ -3,6 +3,7 @@
 # crosses z, over the heights z = Z0, Z0 + DZ, ..., Z1 (by default the
 # whole set).  Prints the half-width.
 #   awk -v C=1 -v Z0=-0.79 -v Z1=-0.71 -v DZ=0.01 -f halfwidth.awk profile.plot
+/^#/ { next }
 /^[ \t]*$/ { if (seen) exit; next }
 { gsub(",", " ") }
 NF == 4 || NF == 1 { have = 0; seen = 1; next }

@@ -4,6 +4,7 @@
 #   awk -v X=2.6 -f zat.awk profile.plot
 function flush() { if (st > 0) print set, (hit ? zmax : "none"); set++; st = 0; hit = 0 }
 BEGIN { set = 0; st = 0 }
+/^#/ { next }
 /^[ \t]*$/ { flush(); next }
 {
 	gsub(",", " ")
