@@ -24,6 +24,7 @@
 #include "par.h"
 #include "util.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -201,6 +202,35 @@ static void fill_rates(void *ctx, size_t lo, size_t hi, int worker)
 	}
 }
 
+/* Seconds per point and column step of the reaction-diffusion bake
+ * (measured), to refuse a bake beyond the budget. */
+static const double T_PEB = 2.5e-8;
+
+/* The post-exposure bake of a chemically amplified positive resist
+ * (peb.c): M = 1 - h0 in, m out. */
+static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, int nz,
+		     double dx, double dy, double dz, const char *input)
+{
+	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
+	for (size_t k = 0; k < np; k++)
+		M[k] = 1 - M[k];
+	struct peb_params pp;
+	peb_params_from(&pp, in);
+	double change;
+	int n = peb_choose_steps(&pp, M, ncol, nz, dz, &change);
+	if (!(change < PEB_TOL))
+		die("%s:%ld: the bake did not converge in %d steps (m still changes by %g)",
+		    input, in->line_peb, n, change);
+	char what[64];
+	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
+	budget_check(input, what, (double)np * n * T_PEB, (double)np * 3 * sizeof(double));
+	int nouter = n / PEB_INNER > 0 ? n / PEB_INNER : 1;
+	peb_run(&pp, M, nx, ny, nz, dx, dy, dz, nouter, n / nouter);
+	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "
+		 "columns within %.2g of the doubled count", in->peb_time,
+		 sqrt(2 * in->dacid * in->peb_time), n, nouter, change);
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog(argv[0]);
@@ -314,9 +344,13 @@ int main(int argc, char **argv)
 		progress("bake: diffusion length %g um in %s", in.diffusion,
 			 in.bake == BAKE_3D ? "x, y and z" : "z");
 
+	if (in.have_car)
+		car_bake(&in, M, nx, ny, nz, (c->xmax - c->xmin) / (nx - 1),
+			 (c->ymax - c->ymin) / (ny - 1), dz, o.input);
+
 	struct devrate dv;
 	devrate_init(&dv, &in);
-	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
+	static const char *mname[] = {"kim", "mack", "dill", "canegative", "enhanced", "notch"};
 	struct rates rj = {&dv, M, R, ncol, in.thick, dz};
 	par_for((size_t)nz, 1, fill_rates, &rj);
 	progress("development rate: %s model", mname[in.model]);
