@@ -140,9 +140,10 @@ void peb_params_from(struct peb_params *pp, const struct bleach_input *in);
 double peb_react(const struct peb_params *pp, double tau, double *h, double *q);
 /* The bake of f[(k * ny + j) * nx + i] (nz planes of nx * ny, periodic in
  * x and y with the last node repeating the first, no flux in z): h0 in,
- * m out.  nouter x-y diffusion steps, each of ninner column steps. */
+ * m out.  nouter x-y diffusion steps, each of ninner column steps.  hout
+ * (NULL or nx ny nz values): the acid at the end of the bake. */
 void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
-	     double dx, double dy, double dz, int nouter, int ninner);
+	     double dx, double dy, double dz, int nouter, int ninner, double *hout);
 /* The bake of ncol independent columns f[k * ncol + q] (no x-y
  * diffusion), in nsteps Strang steps. */
 void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz,

@@ -115,12 +115,18 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 		*qp = 0;        /* rounding: q never goes below zero */
 	if (pp->p == 1)
 		return h0 * tau;        /* kq = 0: h constant */
-	/* the integral of h^p: subintervals [0, s0], [s0, 2 s0], [2 s0, 4 s0]...
-	 * with s0 a tenth of the fastest time scale of h */
+	/* the integral of h^p: subintervals growing geometrically (a quarter
+	 * of the elapsed time plus the fastest time scale 1/rate of h, which
+	 * follows the algebraic decay h0 / (1 + kq h0 t) when d = 0) */
 	double rate = fabs(a) + kq * h0;
-	double s0 = rate > 0 ? 0.1 / rate : tau;
+	double s0 = rate > 0 ? 0.25 / rate : tau;
+	/* and never wider than an eighth of the time scale 1/|a| of the
+	 * exponential approach that follows the transient */
+	double wmax = fabs(a) > 0 ? 0.125 / fabs(a) : tau;
 	double sum = 0, lo = 0, w = s0;
 	for (;;) {
+		if (w > wmax)
+			w = wmax;
 		double hi = lo + w;
 		if (hi > tau || w <= 0)
 			hi = tau;
@@ -132,7 +138,7 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 		if (hi >= tau)
 			break;
 		lo = hi;
-		w = hi;         /* the next subinterval doubles the span */
+		w = s0 + 0.25 * hi;
 	}
 	return sum;
 }
@@ -347,7 +353,7 @@ static void pass_blocks(void *ctx, size_t lo, size_t hi, int worker)
 }
 
 void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
-	     double dx, double dy, double dz, int nouter, int ninner)
+	     double dx, double dy, double dz, int nouter, int ninner, double *hout)
 {
 	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
 	double *H = f;          /* h0 in, m out */
@@ -382,6 +388,13 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 			par_for(nblk, 1, pass_blocks, &pass);
 		}
 	}
+	if (hout) {
+		/* the acid at the end: the last x-y half step, which m does not
+		 * need, completes it */
+		if (xy && pp->t > 0 && pp->dh > 0)
+			bake_xy(H, nx, ny, nz, dx, dy, sqrt(2 * pp->dh * 0.5 * Dt));
+		memcpy(hout, H, np * sizeof *H);
+	}
 	for (size_t k = 0; k < np; k++)
 		f[k] = exp(-pp->kamp * A[k]);
 	free(pass.scratch);
@@ -392,7 +405,7 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 
 void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz, int nsteps)
 {
-	peb_run(pp, f, (int)ncol, 1, nz, 1, 1, dz, 1, nsteps);
+	peb_run(pp, f, (int)ncol, 1, nz, 1, 1, dz, 1, nsteps, NULL);
 }
 
 /* Sample columns for the step choice. */
