@@ -153,11 +153,16 @@ void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, do
  * doubled count, the last change in *change. */
 int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol, int nz,
 		     double dz, double *change);
-#define PEB_TOL 5e-4
+#define PEB_TOL 1e-3
 #define PEB_MIN_STEPS 8
 #define PEB_MAX_STEPS 65536
-/* Column steps per x-y diffusion step. */
-#define PEB_INNER 4
+/* The x-y diffusion steps for n column steps: starting from n /
+ * PEB_OUTER_START, doubled until m of the x-z and y-z slices through the
+ * steepest image edge changes by less than PEB_TOL; the doubled count
+ * (at most n), the last change in *change. */
+int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		     double dx, double dy, double dz, int n, double *change);
+#define PEB_OUTER_START 64
 
 /* ---- devrate.c: development-rate models (thesis 2.1, Table 9.1) ---- */
 

@@ -224,11 +224,13 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
 	budget_check(input, what, (double)np * n * T_PEB, (double)np * 3 * sizeof(double));
-	int nouter = n / PEB_INNER > 0 ? n / PEB_INNER : 1;
+	double change_xy;
+	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
 	peb_run(&pp, M, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
 	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "
-		 "columns within %.2g of the doubled count", in->peb_time,
-		 sqrt(2 * in->dacid * in->peb_time), n, nouter, change);
+		 "columns and slices within %.2g of the doubled counts", in->peb_time,
+		 sqrt(2 * in->dacid * in->peb_time), n, nouter,
+		 change > change_xy ? change : change_xy);
 }
 
 int main(int argc, char **argv)

@@ -30,7 +30,7 @@
  *     grid modes that the reaction fronts excite are damped, not kept
  *     ringing as Crank-Nicolson would);
  *   - x, y diffusion: exact in the Fourier basis of the periodic window
- *     (bake.c's bake_xy with sigma = sqrt(2 D dt)).
+ *     (each mode times e^{-D kappa^2 dt}, by a mixed-radix FFT below).
  * Consecutive half steps are merged; the final half diffusions are not
  * done at all, since m after the bake depends only on the acid during
  * the reactions.  m = exp(-kamp * integral of h^p dt) at the end.
@@ -44,6 +44,7 @@
 #include "par.h"
 #include "util.h"
 
+#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -100,8 +101,10 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 			h1 = h0 * a / den;
 			in = (x + log(den / a)) / kq;
 		} else {
-			double g = kq * h0 * tau * phi1(x);     /* kq h0 (e^x - 1)/a */
-			h1 = h0 * exp(x) / (1 + g);
+			/* one expm1 gives e^x and (e^x - 1)/a */
+			double e1 = fabs(x) < 1e-300 ? 0 : expm1(x);
+			double g = kq * h0 * (e1 == 0 ? tau : e1 / a);  /* kq h0 (e^x - 1)/a */
+			h1 = h0 * (1 + e1) / (1 + g);
 			in = log1p(g) / kq;
 		}
 		*hp = h1;
@@ -276,6 +279,203 @@ static void zstep_apply(const struct zstep *z, int n, size_t b, double *u, doubl
 	tridiag_solve(&z->b, n, b, u);
 }
 
+/* ---- x-y diffusion: exact in the Fourier basis, by a mixed-radix FFT ---- */
+
+/* A complex DFT of any length n (recursive decimation in time, radix the
+ * smallest prime factor, the direct sum for that factor), X[k] =
+ * sum_j x[j] e^{-2 pi i j k / n}.  The periods here are the window's
+ * nx - 1 samples (99 = 3 * 3 * 11 for 100 points), which a radix-2
+ * transform would not take; a matrix product costs n per point instead
+ * of the sum of the factors.  (src/lib has no FFT yet; when it has, this
+ * goes.) */
+struct dft {
+	int n;
+	double complex *tw;     /* e^{-2 pi i j / n}, j < n */
+	double complex *buf;    /* n scratch values */
+};
+
+/* complex product without the C99 checks for infinities (the values
+ * here are finite), which made the transform five times slower */
+static inline double complex cmul(double complex a, double complex b)
+{
+	double ar = creal(a), ai = cimag(a), br = creal(b), bi = cimag(b);
+	return CMPLX(ar * br - ai * bi, ar * bi + ai * br);
+}
+
+static void dft_init(struct dft *d, int n)
+{
+	d->n = n;
+	d->tw = xreallocarray(NULL, (size_t)n, sizeof *d->tw);
+	d->buf = xreallocarray(NULL, (size_t)n, sizeof *d->buf);
+	for (int j = 0; j < n; j++)
+		d->tw[j] = cexp(-2 * M_PI * I * (double)j / n);
+}
+
+static void dft_free(struct dft *d)
+{
+	free(d->tw);
+	free(d->buf);
+}
+
+/* out[0..n) = DFT of in[0], in[s], ... in[(n-1) s]; W_n^j = tw[j * ts] */
+static void dft_rec(const struct dft *d, const double complex *in, double complex *out,
+		    int n, int s, int ts)
+{
+	if (n == 1) {
+		out[0] = in[0];
+		return;
+	}
+	int r = 2;
+	while (r * r <= n && n % r)
+		r++;
+	if (n % r)
+		r = n;          /* n prime: one direct sum */
+	int m = n / r;
+	for (int q = 0; q < r; q++)
+		dft_rec(d, in + (size_t)q * s, out + (size_t)q * m, m, s * r, ts * r);
+	/* X[k + u m] = sum_q W_r^{q u} (W_n^{q k} Y_q[k]): twiddle, then a
+	 * direct DFT of length r */
+	double complex t[2 * 64], *tmp = r <= 64 ? t : xreallocarray(NULL, 2 * (size_t)r, sizeof *tmp);
+	double complex *wr = tmp + r;
+	for (int j = 0; j < r; j++)
+		wr[j] = d->tw[(size_t)j * m * ts];      /* W_r^j = W_N^{j N / r} */
+	for (int k = 0; k < m; k++) {
+		for (int q = 0; q < r; q++)
+			tmp[q] = cmul(out[(size_t)q * m + k], d->tw[(size_t)q * k * ts]);
+		for (int u = 0; u < r; u++) {
+			double complex acc = 0;
+			for (int q = 0, e = 0; q < r; q++) {
+				acc += cmul(tmp[q], wr[e]);
+				e += u;
+				if (e >= r)
+					e -= r;
+			}
+			out[k + u * m] = acc;
+		}
+	}
+	if (tmp != t)
+		free(tmp);
+}
+
+/* x[0..n) replaced by its DFT (forward) or n times its inverse DFT. */
+static void dft_run(const struct dft *d, double complex *x, int inverse)
+{
+	int n = d->n;
+	if (inverse)
+		for (int j = 0; j < n; j++)
+			x[j] = conj(x[j]);
+	dft_rec(d, x, d->buf, n, 1, 1);
+	for (int j = 0; j < n; j++)
+		x[j] = inverse ? conj(d->buf[j]) : d->buf[j];
+}
+
+/* The heat-equation factors e^{-D kappa^2 t} of the p Fourier modes of a
+ * period of p samples spacing h, divided by p (the inverse's scale). */
+static double *heat_factors(int p, double h, double Dt)
+{
+	double *g = xreallocarray(NULL, (size_t)p, sizeof *g);
+	double L = p * h;
+	for (int m = 0; m < p; m++) {
+		int mf = m <= p / 2 ? m : m - p;
+		double kappa = 2 * M_PI * mf / L;
+		g[m] = exp(-Dt * kappa * kappa) / p;
+	}
+	return g;
+}
+
+struct xy_pass {
+	double *f;
+	int nx, ny;
+	const double *gx, *gy;          /* NULL: that direction is not done */
+	struct dft *dx, *dy;            /* per worker */
+	double complex *row;            /* per worker: max(px, py) */
+};
+
+/* Two real rows at once as the real and imaginary parts of one complex
+ * row: the factors are real and even in the wavenumber, so the two never
+ * mix. */
+static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct xy_pass *x = ctx;
+	int nx = x->nx, ny = x->ny, px = nx - 1, py = ny - 1;
+	struct dft *dxw = x->dx + worker, *dyw = x->dy + worker;
+	double complex *z = x->row + (size_t)worker * (size_t)(px > py ? px : py);
+	for (size_t k = lo; k < hi; k++) {
+		double *pl = x->f + k * (size_t)nx * ny;
+		if (x->gx)
+			for (int j = 0; j < ny; j += 2) {
+				double *a = pl + (size_t)j * nx;
+				double *b = j + 1 < ny ? a + nx : NULL;
+				for (int i = 0; i < px; i++)
+					z[i] = a[i] + I * (b ? b[i] : 0);
+				dft_run(dxw, z, 0);
+				for (int i = 0; i < px; i++)
+					z[i] *= x->gx[i];
+				dft_run(dxw, z, 1);
+				for (int i = 0; i < px; i++) {
+					a[i] = creal(z[i]);
+					if (b)
+						b[i] = cimag(z[i]);
+				}
+				a[px] = a[0];
+				if (b)
+					b[px] = b[0];
+			}
+		if (x->gy)
+			for (int i = 0; i < nx; i += 2) {
+				int i2 = i + 1 < nx ? i + 1 : -1;
+				for (int j = 0; j < py; j++)
+					z[j] = pl[(size_t)j * nx + i] + I * (i2 >= 0 ? pl[(size_t)j * nx + i2] : 0);
+				dft_run(dyw, z, 0);
+				for (int j = 0; j < py; j++)
+					z[j] *= x->gy[j];
+				dft_run(dyw, z, 1);
+				for (int j = 0; j < py; j++) {
+					pl[(size_t)j * nx + i] = creal(z[j]);
+					if (i2 >= 0)
+						pl[(size_t)j * nx + i2] = cimag(z[j]);
+				}
+				pl[(size_t)py * nx + i] = pl[i];
+				if (i2 >= 0)
+					pl[(size_t)py * nx + i2] = pl[i2];
+			}
+	}
+}
+
+/* f (nz planes of nx * ny, periodic with the last node repeating the
+ * first) after diffusing D for t in x and y: each Fourier mode times
+ * e^{-D kappa^2 t}, exactly. */
+static void diffuse_xy(double *f, int nx, int ny, int nz, double hx, double hy, double D, double t)
+{
+	int px = nx - 1, py = ny - 1;
+	if (!(D > 0) || !(t > 0) || (px < 2 && py < 2))
+		return;
+	int nw = par_threads();
+	struct xy_pass x = {f, nx, ny, px >= 2 ? heat_factors(px, hx, D * t) : NULL,
+			    py >= 2 ? heat_factors(py, hy, D * t) : NULL,
+			    xcalloc((size_t)nw, sizeof(struct dft)), xcalloc((size_t)nw, sizeof(struct dft)),
+			    xreallocarray(NULL, (size_t)nw * (size_t)(px > py ? px : py),
+					  sizeof(double complex))};
+	for (int w = 0; w < nw; w++) {
+		if (x.gx)
+			dft_init(&x.dx[w], px);
+		if (x.gy)
+			dft_init(&x.dy[w], py);
+	}
+	par_for((size_t)nz, 1, xy_planes, &x);
+	for (int w = 0; w < nw; w++) {
+		if (x.gx)
+			dft_free(&x.dx[w]);
+		if (x.gy)
+			dft_free(&x.dy[w]);
+	}
+	free(x.dx);
+	free(x.dy);
+	free(x.row);
+	free((void *)x.gx);
+	free((void *)x.gy);
+}
+
 /* ---- the column integration (z diffusion and reaction) ---- */
 
 /* The z operators of one inner step, acid and quencher. */
@@ -380,10 +580,8 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 		for (int s = 0; s < nouter; s++) {
 			double tx = s == 0 ? 0.5 * Dt : Dt;
 			if (xy) {
-				if (pp->dh > 0)
-					bake_xy(H, nx, ny, nz, dx, dy, sqrt(2 * pp->dh * tx));
-				if (pp->dq > 0)
-					bake_xy(Q, nx, ny, nz, dx, dy, sqrt(2 * pp->dq * tx));
+				diffuse_xy(H, nx, ny, nz, dx, dy, pp->dh, tx);
+				diffuse_xy(Q, nx, ny, nz, dx, dy, pp->dq, tx);
 			}
 			par_for(nblk, 1, pass_blocks, &pass);
 		}
@@ -391,8 +589,8 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 	if (hout) {
 		/* the acid at the end: the last x-y half step, which m does not
 		 * need, completes it */
-		if (xy && pp->t > 0 && pp->dh > 0)
-			bake_xy(H, nx, ny, nz, dx, dy, sqrt(2 * pp->dh * 0.5 * Dt));
+		if (xy && pp->t > 0)
+			diffuse_xy(H, nx, ny, nz, dx, dy, pp->dh, 0.5 * Dt);
 		memcpy(hout, H, np * sizeof *H);
 	}
 	for (size_t k = 0; k < np; k++)
@@ -486,4 +684,76 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 	free(a);
 	free(b);
 	return n;
+}
+
+/* m of an x-z slice (row j) or a y-z slice (column i) of h0 after the
+ * bake in nouter x-y steps of n / nouter column steps, into out. */
+static void slice_run(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		      double dx, double dy, double dz, int along_x, int at, int n, int nouter,
+		      double *out)
+{
+	int len = along_x ? nx : ny;
+	size_t ncol = (size_t)nx * (size_t)ny;
+	for (int k = 0; k < nz; k++)
+		for (int s = 0; s < len; s++)
+			out[(size_t)k * len + s] = h0[(size_t)k * ncol +
+				(along_x ? (size_t)at * nx + s : (size_t)s * nx + at)];
+	peb_run(pp, out, len, 1, nz, along_x ? dx : dy, 1, dz, nouter, n / nouter, NULL);
+}
+
+int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		     double dx, double dy, double dz, int n, double *change)
+{
+	if (change)
+		*change = 0;
+	if ((nx <= 2 && ny <= 2) || !(pp->dh > 0 || pp->dq > 0))
+		return 1;
+	/* the slices through the column where the column-mean acid changes
+	 * most from its neighbours in x and y: the steepest image edge */
+	size_t ncol = (size_t)nx * (size_t)ny;
+	double *c = xcalloc(ncol, sizeof *c);
+	for (int k = 0; k < nz; k++)
+		for (size_t q = 0; q < ncol; q++)
+			c[q] += h0[(size_t)k * ncol + q];
+	int bi = 0, bj = 0;
+	double best = -1;
+	for (int j = 0; j + 1 < ny || (ny == 1 && j == 0); j++)
+		for (int i = 0; i + 1 < nx; i++) {
+			size_t q = (size_t)j * nx + i;
+			double g = fabs(c[q + 1] - c[q]) + (j + 1 < ny ? fabs(c[q + nx] - c[q]) : 0);
+			if (g > best) {
+				best = g;
+				bi = i;
+				bj = j;
+			}
+		}
+	free(c);
+	int len = nx > ny ? nx : ny;
+	double *a = xreallocarray(NULL, (size_t)len * nz, sizeof *a);
+	double *b = xreallocarray(NULL, (size_t)len * nz, sizeof *b);
+	int K = n / PEB_OUTER_START > 0 ? n / PEB_OUTER_START : 1;
+	double diff = 0;
+	for (;;) {
+		if (K >= n)
+			break;
+		diff = 0;
+		for (int dir = 0; dir < 2; dir++) {
+			int l = dir == 0 ? nx : ny;
+			if (l <= 2)
+				continue;
+			slice_run(pp, h0, nx, ny, nz, dx, dy, dz, dir == 0, dir == 0 ? bj : bi, n, K, a);
+			slice_run(pp, h0, nx, ny, nz, dx, dy, dz, dir == 0, dir == 0 ? bj : bi, n, 2 * K, b);
+			for (size_t s = 0; s < (size_t)l * nz; s++)
+				if (fabs(a[s] - b[s]) > diff)
+					diff = fabs(a[s] - b[s]);
+		}
+		K *= 2;
+		if (diff < PEB_TOL)
+			break;
+	}
+	free(a);
+	free(b);
+	if (change)
+		*change = diff;
+	return K < n ? K : n;
 }
