@@ -205,7 +205,7 @@ static void fill_rates(void *ctx, size_t lo, size_t hi, int worker)
 
 /* Seconds per point and column step of the reaction-diffusion bake
  * (measured), to refuse a bake beyond the budget. */
-static const double T_PEB = 2.5e-8;
+static const double T_PEB = 8e-8;
 
 /* z nodes of the CA bake a node of the output grid spans: the bake runs
  * on a z grid of at least PEB_Z_PER_PERIOD points a standing-wave period
