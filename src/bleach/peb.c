@@ -146,24 +146,26 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 	return sum;
 }
 
-double peb_react(const struct peb_params *pp, double tau, double *hp, double *qp)
+/* peb_react with e = exp(-kloss tau / 2) given (one exp a step, not a
+ * point). */
+static double react(const struct peb_params *pp, double tau, double e, double *hp, double *qp)
 {
 	double h = *hp > 0 ? *hp : 0, q = *qp > 0 ? *qp : 0;
-	double acc = 0;
-	if (pp->kloss > 0) {
-		/* loss, quenching, loss (Strang): the loss alone is exact, the
-		 * quenching (with the deprotection of m) alone is exact; only
-		 * their coupling is split */
-		double e = exp(-pp->kloss * 0.5 * tau);
-		h *= e;
-		acc = quench(pp, tau, &h, &q);
-		h *= e;
-	} else {
-		acc = quench(pp, tau, &h, &q);
-	}
+	double acc;
+	/* loss, quenching, loss (Strang): the loss alone is exact, the
+	 * quenching (with the deprotection of m) alone is exact; only their
+	 * coupling is split (e = 1 without loss, and nothing is split) */
+	h *= e;
+	acc = quench(pp, tau, &h, &q);
+	h *= e;
 	*hp = h;
 	*qp = q;
 	return acc;
+}
+
+double peb_react(const struct peb_params *pp, double tau, double *hp, double *qp)
+{
+	return react(pp, tau, exp(-pp->kloss * 0.5 * tau), hp, qp);
 }
 
 /* ---- z diffusion: TR-BDF2 on the no-flux second-difference Laplacian ---- */
@@ -505,8 +507,9 @@ static void columns_steps(const struct peb_params *pp, const struct zops *o, int
 	size_t nb = (size_t)nz * b;
 	for (int s = 0; s <= n; s++) {
 		double tr = s == 0 || s == n ? 0.5 * dt : dt;
+		double e = exp(-pp->kloss * 0.5 * tr);
 		for (size_t k = 0; k < nb; k++)
-			A[k] += peb_react(pp, tr, &H[k], &Q[k]);
+			A[k] += react(pp, tr, e, &H[k], &Q[k]);
 		if (s < n) {
 			zstep_apply(&o->h_full, nz, b, H, y);
 			zstep_apply(&o->q_full, nz, b, Q, y);
