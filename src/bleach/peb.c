@@ -330,8 +330,20 @@ static void dft_rec(const struct dft *d, const double complex *in, double comple
 	int r = 2;
 	while (r * r <= n && n % r)
 		r++;
-	if (n % r)
-		r = n;          /* n prime: one direct sum */
+	if (n % r) {
+		/* n prime: the direct sum, W_n^j = tw[j ts] */
+		for (int k = 0; k < n; k++) {
+			double complex acc = 0;
+			for (int q = 0, e = 0; q < n; q++) {
+				acc += cmul(in[(size_t)q * s], d->tw[(size_t)e * ts]);
+				e += k;
+				if (e >= n)
+					e -= n;
+			}
+			out[k] = acc;
+		}
+		return;
+	}
 	int m = n / r;
 	for (int q = 0; q < r; q++)
 		dft_rec(d, in + (size_t)q * s, out + (size_t)q * m, m, s * r, ts * r);
@@ -342,8 +354,10 @@ static void dft_rec(const struct dft *d, const double complex *in, double comple
 	for (int j = 0; j < r; j++)
 		wr[j] = d->tw[(size_t)j * m * ts];      /* W_r^j = W_N^{j N / r} */
 	for (int k = 0; k < m; k++) {
-		for (int q = 0; q < r; q++)
-			tmp[q] = cmul(out[(size_t)q * m + k], d->tw[(size_t)q * k * ts]);
+		tmp[0] = out[k];
+		for (int q = 1; q < r; q++)
+			tmp[q] = k ? cmul(out[(size_t)q * m + k], d->tw[(size_t)q * k * ts])
+				   : out[(size_t)q * m];
 		for (int u = 0; u < r; u++) {
 			double complex acc = 0;
 			for (int q = 0, e = 0; q < r; q++) {
