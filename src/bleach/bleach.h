@@ -127,6 +127,43 @@ void bake_rows(double *rows, int nrows, int n, double d, double sigma);
 /* The same for the rows of a and of b (b may be NULL), one matrix. */
 void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 
+/* ---- peb.c: reaction-diffusion bake of a CA positive resist (issue 18) ---- */
+
+struct peb_params {
+	double q0, kamp, p, kloss, kq;  /* car: -, 1/s, -, 1/s, 1/s */
+	double t, dh, dq;               /* peb: s, um2/s, um2/s */
+};
+void peb_params_from(struct peb_params *pp, const struct bleach_input *in);
+/* The exact reaction of one point over tau seconds: h and q replaced by
+ * their values at the end (negative inputs count as 0), the integral of
+ * max(h, 0)^p dt over the step returned. */
+double peb_react(const struct peb_params *pp, double tau, double *h, double *q);
+/* The bake of f[(k * ny + j) * nx + i] (nz planes of nx * ny, periodic in
+ * x and y with the last node repeating the first, no flux in z): h0 in,
+ * m out.  nouter x-y diffusion steps, each of ninner column steps.  hout
+ * (NULL or nx ny nz values): the acid at the end of the bake. */
+void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
+	     double dx, double dy, double dz, int nouter, int ninner, double *hout);
+/* The bake of ncol independent columns f[k * ncol + q] (no x-y
+ * diffusion), in nsteps Strang steps. */
+void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz,
+		 int nsteps);
+/* Steps so that m of sample columns (least, most acid and quantiles)
+ * changes by less than PEB_TOL from the count to its double; returns the
+ * doubled count, the last change in *change. */
+int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol, int nz,
+		     double dz, double *change);
+#define PEB_TOL 1e-3
+#define PEB_MIN_STEPS 8
+#define PEB_MAX_STEPS 65536
+/* The x-y diffusion steps for n column steps: starting from n /
+ * PEB_OUTER_START, doubled until m of the x-z and y-z slices through the
+ * steepest image edge changes by less than PEB_TOL; the doubled count
+ * (at most n), the last change in *change. */
+int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		     double dx, double dy, double dz, int n, double *change);
+#define PEB_OUTER_START 64
+
 /* ---- devrate.c: development-rate models (thesis 2.1, Table 9.1) ---- */
 
 /* Precomputed constants of the negative CA resist. */

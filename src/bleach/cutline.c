@@ -67,6 +67,9 @@ void cutline_bleach(const char *cut, const char *input, const char *out, int asc
 			die("%s:1: distances along the cutline must increase (point %d)", cut, k + 1);
 	struct bleach_input in;
 	fmt_bleach_read(input, &in);
+	if (in.have_car)
+		die("%s:%ld: car and peb are not for -cutline: use a "
+		    "3D window one period wide", input, in.line_car);
 	int nx = in.nx ? in.nx : n, nz = in.nz;
 	if (nx > CUT_MAX_NX)
 		die("%s:1: %d columns across the cutline is too many (at most %d; set grid nx)",

@@ -13,6 +13,12 @@
  *              (thesis 9.3.2): acid a = 1 - M after the bake, crosslink
  *              X = 1 - exp(-k(T) t a^m), k(T) = k0 exp(-Ea / kB T),
  *              R = Rmax (1 - X)^p + Rmin
+ *   enhanced   Mack's enhanced kinetic model (Mack 1992, as PROLITH
+ *              defines it): R = Rresin [1 + kenh (1-M)^n] / [1 + kinh M^l],
+ *              kenh = Rmax/Rresin - 1, kinh = Rresin/Rmin - 1, so that
+ *              R(0) = Rmax and R(1) = Rmin
+ *   notch      the notch model (PROLITH): R = Rmax (1-M)^n (a+1)(1-M)^nn
+ *              / (a + (1-M)^nn) + Rmin, a = (nn+1)/(nn-1) (1-Mth_notch)^nn
  * M is clamped to [0, 1] first: the spectral bake and the interpolation
  * over dose may overshoot it by rounding-sized amounts.
  */
@@ -63,6 +69,18 @@ double devrate(const struct devrate *d, double M, double depth)
 		if (!(a + u > 0))
 			return r[1];    /* both underflowed: far below threshold */
 		return r[0] * (a + 1) * u / (a + u) + r[1];
+	}
+	case BLEACH_MACKENH: {
+		double kenh = r[0] / r[2] - 1, kinh = r[2] / r[1] - 1;
+		return r[2] * (1 + kenh * pow(1 - M, r[3])) / (1 + kinh * pow(M, r[4]));
+	}
+	case BLEACH_NOTCH: {
+		double nn = r[4];
+		double a = (nn + 1) / (nn - 1) * pow(1 - r[3], nn);
+		double u = pow(1 - M, nn);
+		if (!(a + u > 0))
+			return r[1];    /* both underflowed: far below the notch */
+		return r[0] * pow(1 - M, r[2]) * (a + 1) * u / (a + u) + r[1];
 	}
 	case BLEACH_DILL:
 		return 1e-3 * exp(r[0] + r[1] * M + r[2] * M * M);

@@ -24,6 +24,7 @@
 #include "par.h"
 #include "util.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -116,6 +117,7 @@ static struct {
 	struct ratefile *r;
 	double *dose;
 	struct exposure e;
+	double *Mfine;
 } held;
 
 static void progress(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -201,6 +203,62 @@ static void fill_rates(void *ctx, size_t lo, size_t hi, int worker)
 	}
 }
 
+/* Seconds per point and column step of the reaction-diffusion bake
+ * (measured), to refuse a bake beyond the budget. */
+static const double T_PEB = 8e-8;
+
+/* z nodes of the CA bake a node of the output grid spans: the bake runs
+ * on a z grid of at least PEB_Z_PER_PERIOD points a standing-wave period
+ * and four per acid diffusion length (second-order differences err by
+ * (kappa dz)^2 / 12 of a mode's decay rate: 0.8% for the standing waves
+ * at 20 points a period, measured 3e-3 in m for examples/car-krf-lines
+ * at 21 and 6e-4 at 42: 40 is the rule), the exposure computed on it, and the output
+ * keeps every r-th node. */
+#define PEB_Z_PER_PERIOD 40
+#define PEB_Z_MAX_REFINE 16
+
+static int car_refine(const struct bleach_input *in, int nz)
+{
+	double dz = in->thick / (nz - 1);
+	double target = in->wavelength / (2 * in->index) / PEB_Z_PER_PERIOD;
+	double L = sqrt(2 * in->dacid * in->peb_time);
+	if (L > 0 && L / 4 < target)
+		target = L / 4;
+	double r = ceil(dz / target - 1e-9);
+	if (!(r >= 1))
+		r = 1;
+	if (r > PEB_Z_MAX_REFINE)
+		r = PEB_Z_MAX_REFINE;
+	return (int)r;
+}
+
+/* The post-exposure bake of a chemically amplified positive resist
+ * (peb.c): M = 1 - h0 in, m out. */
+static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, int nz,
+		     double dx, double dy, double dz, const char *input)
+{
+	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
+	for (size_t k = 0; k < np; k++)
+		M[k] = 1 - M[k];
+	struct peb_params pp;
+	peb_params_from(&pp, in);
+	double change;
+	int n = peb_choose_steps(&pp, M, ncol, nz, dz, &change);
+	if (!(change < PEB_TOL))
+		die("%s:%ld: the bake did not converge in %d steps (m still changes by %g)",
+		    input, in->line_peb, n, change);
+	char what[64];
+	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
+	budget_check(input, what, (double)np * n * T_PEB, (double)np * 3 * sizeof(double));
+	double change_xy;
+	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
+	peb_run(&pp, M, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
+	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "
+		 "columns and slices within %.2g of the doubled counts", in->peb_time,
+		 sqrt(2 * in->dacid * in->peb_time), n, nouter,
+		 change > change_xy ? change : change_xy);
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog(argv[0]);
@@ -279,8 +337,18 @@ int main(int argc, char **argv)
 		progress("aerial image %dx%d from %s, largest column dose %g mJ/cm2",
 			 c->nx, c->ny, o.contour, dmax);
 
+	/* a CA bake may need a finer z grid than the output's: the exposure
+	 * and the bake run on nze nodes, every zr-th of which is output */
+	int zr = in.have_car ? car_refine(&in, nz) : 1, nze = zr * (nz - 1) + 1;
+	double *Me = M;
+	if (zr > 1) {
+		double ne = (double)ncol * nze;
+		snprintf(what, sizeof what, "%.3g bake points", ne);
+		budget_check(o.input, what, ne * T_POINT, ne * 4 * sizeof(double));
+		Me = held.Mfine = xreallocarray(NULL, ncol, (size_t)nze * sizeof *Me);
+	}
 	struct exposure *e = &held.e;
-	if (exposure_init(e, &in, nz, dmax, 1.0) != 0) {
+	if (exposure_init(e, &in, nze, dmax, 1.0) != 0) {
 		if (o.dose)
 			die("-dose %g mJ/cm2 with C = %g cm2/mJ (%s) needs more than %g exposure "
 			    "steps", in.dose, in.C, o.input, EXPOSE_MAX_STEPS);
@@ -289,7 +357,7 @@ int main(int argc, char **argv)
 	}
 	struct dose_table *t = dose_table_build(e, dmax);
 	progress("exposure: %d dose steps of %g mJ/cm2, %d points through %g um, %s",
-		 t->nd, t->h, nz, in.thick,
+		 t->nd, t->h, nze, in.thick,
 		 in.standing ? "thin-film standing waves" : "Beer-Lambert, no reflections");
 
 	double dz = in.thick / (nz - 1);
@@ -299,10 +367,10 @@ int main(int argc, char **argv)
 	}
 
 	if (st->is_stack) {
-		stack_expose(st, &in, e, t, I, ncol, nz, M);
+		stack_expose(st, &in, e, t, I, ncol, nze, Me);
 	} else {
-		struct columns cj = {t, dose, M, ncol, nz,
-				     xreallocarray(NULL, (size_t)par_threads() * (size_t)nz,
+		struct columns cj = {t, dose, Me, ncol, nze,
+				     xreallocarray(NULL, (size_t)par_threads() * (size_t)nze,
 						   sizeof(double))};
 		par_for(ncol, PAR_MIN_COLUMNS, fill_columns, &cj);
 		free(cj.col);
@@ -314,9 +382,23 @@ int main(int argc, char **argv)
 		progress("bake: diffusion length %g um in %s", in.diffusion,
 			 in.bake == BAKE_3D ? "x, y and z" : "z");
 
+	if (in.have_car) {
+		car_bake(&in, Me, nx, ny, nze, (c->xmax - c->xmin) / (nx - 1),
+			 (c->ymax - c->ymin) / (ny - 1), in.thick / (nze - 1), o.input);
+		if (zr > 1) {
+			for (int k = 0; k < nz; k++)
+				memcpy(M + (size_t)k * ncol, Me + (size_t)k * zr * ncol,
+				       ncol * sizeof *M);
+			free(Me);
+			held.Mfine = NULL;
+			progress("peb: on %d points through the resist, one in %d written",
+				 nze, zr);
+		}
+	}
+
 	struct devrate dv;
 	devrate_init(&dv, &in);
-	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
+	static const char *mname[] = {"kim", "mack", "dill", "canegative", "enhanced", "notch"};
 	struct rates rj = {&dv, M, R, ncol, in.thick, dz};
 	par_for((size_t)nz, 1, fill_rates, &rj);
 	progress("development rate: %s model", mname[in.model]);

@@ -21,12 +21,25 @@
 
 /* Statements, for "given twice" and "missing" checks. */
 enum { S_WAVE, S_AMB, S_RESIST, S_SUB, S_DOSE, S_BAKE, S_DEV, S_GRID,
-       S_SW, S_XLINK, S_COUNT };
+       S_SW, S_XLINK, S_CAR, S_PEB, S_COUNT };
+
+/* A value of car or peb written ARRHENIUS(A Ea): evaluated once the
+ * whole file is read, at peb's temperature. */
+struct arrh {
+	int used;
+	double A, ea;
+	double *dst;
+	double min, max;
+	const char *what;
+	long line;
+};
+enum { ARR_KAMP, ARR_KLOSS, ARR_KQ, ARR_DH, ARR_DQ, ARR_COUNT };
 
 struct parser {
 	struct lex *lx;
 	long seen[S_COUNT];         /* line of each statement, 0 if absent */
 	struct bleach_input *in;
+	struct arrh arr[ARR_COUNT];
 };
 
 static double number(struct parser *p, const char *tok, const char *what,
@@ -117,10 +130,14 @@ static void st_develop(struct parser *p, char **t, int nt)
 {
 	struct bleach_input *in = p->in;
 	if (nt < 2)
-		lex_error(p->lx, "develop: missing model (kim, mack, dill or canegative)");
+		lex_error(p->lx, "develop: missing model (kim, mack, dill, canegative, enhanced or notch)");
 	const char *m = t[1];
 	int lo, hi;
-	if (strcasecmp(m, "kim") == 0) {
+	if (strcasecmp(m, "enhanced") == 0) {
+		in->model = BLEACH_MACKENH; lo = hi = 5;
+	} else if (strcasecmp(m, "notch") == 0) {
+		in->model = BLEACH_NOTCH; lo = hi = 5;
+	} else if (strcasecmp(m, "kim") == 0) {
 		in->model = BLEACH_KIM; lo = 3; hi = 6;
 	} else if (strcasecmp(m, "mack") == 0) {
 		in->model = BLEACH_MACK; lo = hi = 4;
@@ -129,12 +146,12 @@ static void st_develop(struct parser *p, char **t, int nt)
 	} else if (strcasecmp(m, "canegative") == 0) {
 		in->model = BLEACH_CANEG; lo = hi = 3;
 	} else {
-		lex_error(p->lx, "develop: unknown model \"%.40s\" (expected kim, mack, dill or canegative)", m);
+		lex_error(p->lx, "develop: unknown model \"%.40s\" (expected kim, mack, dill, canegative, enhanced or notch)", m);
 	}
 	int n = nt - 2;
 	if (n < lo || n > hi || (in->model == BLEACH_KIM && n != 3 && n != 6))
 		lex_error(p->lx, "develop %s: expected %s values, found %d", m,
-			  in->model == BLEACH_KIM ? "3 or 6" : lo == 4 ? "4" : "3", n);
+			  in->model == BLEACH_KIM ? "3 or 6" : lo == 5 ? "5" : lo == 4 ? "4" : "3", n);
 	in->npar = n;
 	for (int i = 0; i < n; i++) {
 		char what[32];
@@ -170,6 +187,24 @@ static void st_develop(struct parser *p, char **t, int nt)
 		if (!(r[2] > 0 && r[2] <= 1000))
 			lex_error(p->lx, "develop canegative: p must be in (0, 1000]");
 		break;
+	case BLEACH_MACKENH:
+		/* Rmin <= Rresin <= Rmax, all positive: the enhancement and
+		 * inhibition constants Rmax/Rresin - 1, Rresin/Rmin - 1 >= 0 */
+		if (!(r[1] > 0 && r[1] <= r[2] && r[2] <= r[0]))
+			lex_error(p->lx, "develop enhanced: need 0 < Rmin <= Rresin <= Rmax");
+		if (!(r[3] > 0 && r[3] <= 1000 && r[4] > 0 && r[4] <= 1000))
+			lex_error(p->lx, "develop enhanced: n and l must be in (0, 1000]");
+		break;
+	case BLEACH_NOTCH:
+		if (!(r[0] >= 0 && r[1] >= 0))
+			lex_error(p->lx, "develop notch: Rmax and Rmin must not be negative");
+		if (!(r[2] >= 0 && r[2] <= 1000))
+			lex_error(p->lx, "develop notch: n must be in [0, 1000]");
+		if (!(r[3] >= 0 && r[3] < 1))
+			lex_error(p->lx, "develop notch: Mth_notch must be in [0, 1)");
+		if (!(r[4] > 1 && r[4] <= 1000))
+			lex_error(p->lx, "develop notch: n_notch must be above 1 (and at most 1000)");
+		break;
 	}
 }
 
@@ -201,6 +236,141 @@ static void st_crosslink(struct parser *p, char **t, int nt)
 		if (!(got & (1 << b)))
 			lex_error(p->lx, "crosslink: missing %s", names[b]);
 	in->have_crosslink = 1;
+}
+
+/* Ranges of the car and peb values (bleach.5). */
+#define CAR_MAX_RATE 1e6        /* 1/s */
+#define CAR_MAX_DIFF 1.0        /* um2/s */
+#define CAR_MAX_Q0 10.0
+#define CAR_MAX_ORDER 10.0
+#define CAR_MAX_TIME 1e4        /* s */
+
+/* A rate or diffusivity of car or peb: a number, or ARRHENIUS(A Ea) (the
+ * parenthesis may hold spaces: "ARRHENIUS( 1e8 0.9 )").  Consumes the
+ * tokens from t[*i]; returns with *i past them. */
+static void rate_value(struct parser *p, char **t, int nt, int *i, int slot,
+		       double *dst, double max, const char *what)
+{
+	const char *v = *i < nt ? t[*i] : NULL;
+	if (v && strncasecmp(v, "arrhenius(", 10) == 0) {
+		/* gather the words up to the closing parenthesis */
+		char buf[256];
+		size_t len = 0;
+		int k = *i;
+		for (;;) {
+			size_t l = strlen(t[k]);
+			if (len + l + 2 > sizeof buf)
+				lex_error(p->lx, "%s: ARRHENIUS(...) too long", what);
+			memcpy(buf + len, t[k], l);
+			len += l;
+			buf[len++] = ' ';
+			buf[len] = 0;
+			if (strchr(t[k], ')'))
+				break;
+			if (++k >= nt)
+				lex_error(p->lx, "%s: ARRHENIUS( without its closing parenthesis", what);
+		}
+		*i = k + 1;
+		char *close = strchr(buf, ')');
+		for (const char *c = close + 1; *c; c++)
+			if (*c != ' ')
+				lex_error(p->lx, "%s: unexpected \"%.40s\" after ARRHENIUS(...)", what, close + 1);
+		*close = 0;
+		char *words[3];
+		int nw = 0;
+		for (char *s = strtok(buf + 10, " "); s; s = strtok(NULL, " "))
+			if (nw < 3)
+				words[nw++] = s;
+			else
+				nw = 3;
+		if (nw != 2)
+			lex_error(p->lx, "%s: expected ARRHENIUS(A Ea), two numbers", what);
+		struct arrh *a = &p->arr[slot];
+		char w[96];
+		snprintf(w, sizeof w, "%s prefactor A", what);
+		a->A = number(p, words[0], w, 0, 1e30);
+		snprintf(w, sizeof w, "%s activation energy Ea (eV)", what);
+		a->ea = number(p, words[1], w, 0, 100);
+		a->used = 1;
+		a->dst = dst;
+		a->min = 0;
+		a->max = max;
+		a->what = what;
+		a->line = lex_lineno(p->lx);
+		return;
+	}
+	*dst = number(p, v, what, 0, max);
+	*i += 1;
+}
+
+static void st_car(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got = 0;
+	for (int i = 1; i < nt;) {
+		const char *kw = t[i++];
+		if (strcasecmp(kw, "quencher") == 0) {
+			in->q0 = number(p, i < nt ? t[i] : NULL, "car quencher q0", 0, CAR_MAX_Q0);
+			i++; got |= 1;
+		} else if (strcasecmp(kw, "amplification") == 0) {
+			rate_value(p, t, nt, &i, ARR_KAMP, &in->kamp, CAR_MAX_RATE,
+				   "car amplification kamp (1/s)");
+			got |= 2;
+		} else if (strcasecmp(kw, "order") == 0) {
+			in->porder = number(p, i < nt ? t[i] : NULL, "car order p", 1e-3, CAR_MAX_ORDER);
+			i++; got |= 4;
+		} else if (strcasecmp(kw, "loss") == 0) {
+			rate_value(p, t, nt, &i, ARR_KLOSS, &in->kloss, CAR_MAX_RATE,
+				   "car loss kloss (1/s)");
+			got |= 8;
+		} else if (strcasecmp(kw, "quenching") == 0) {
+			rate_value(p, t, nt, &i, ARR_KQ, &in->kq, CAR_MAX_RATE,
+				   "car quenching kq (1/s)");
+			got |= 16;
+		} else {
+			lex_error(p->lx, "car: unknown word \"%.40s\" (expected quencher, amplification, "
+				  "order, loss or quenching)", kw);
+		}
+	}
+	static const char *names[] = {"quencher", "amplification", "order", "loss", "quenching"};
+	for (int b = 0; b < 5; b++)
+		if (!(got & (1 << b)))
+			lex_error(p->lx, "car: missing %s", names[b]);
+	in->line_car = lex_lineno(p->lx);
+}
+
+static void st_peb(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got = 0;
+	for (int i = 1; i < nt;) {
+		const char *kw = t[i++];
+		if (strcasecmp(kw, "time") == 0) {
+			in->peb_time = number(p, i < nt ? t[i] : NULL, "peb time (s)", 0, CAR_MAX_TIME);
+			i++; got |= 1;
+		} else if (strcasecmp(kw, "dacid") == 0) {
+			rate_value(p, t, nt, &i, ARR_DH, &in->dacid, CAR_MAX_DIFF,
+				   "peb dacid Dh (um2/s)");
+			got |= 2;
+		} else if (strcasecmp(kw, "dquencher") == 0) {
+			rate_value(p, t, nt, &i, ARR_DQ, &in->dquench, CAR_MAX_DIFF,
+				   "peb dquencher Dq (um2/s)");
+			got |= 4;
+		} else if (strcasecmp(kw, "temperature") == 0) {
+			in->peb_temp = number(p, i < nt ? t[i] : NULL, "peb temperature (C)", -273.0, 2000);
+			if (!(in->peb_temp > -273.15 + 1e-3))
+				lex_error(p->lx, "peb temperature must be above absolute zero");
+			i++; got |= 8;
+		} else {
+			lex_error(p->lx, "peb: unknown word \"%.40s\" (expected time, dacid, dquencher "
+				  "or temperature)", kw);
+		}
+	}
+	static const char *names[] = {"time", "dacid", "dquencher"};
+	for (int b = 0; b < 3; b++)
+		if (!(got & (1 << b)))
+			lex_error(p->lx, "peb: missing %s", names[b]);
+	in->line_peb = lex_lineno(p->lx);
 }
 
 static void st_grid(struct parser *p, char **t, int nt)
@@ -272,6 +442,12 @@ static void statement(struct parser *p, char **t, int nt)
 	} else if (strcasecmp(kw, "crosslink") == 0) {
 		once(p, S_XLINK, "crosslink");
 		st_crosslink(p, t, nt);
+	} else if (strcasecmp(kw, "car") == 0) {
+		once(p, S_CAR, "car");
+		st_car(p, t, nt);
+	} else if (strcasecmp(kw, "peb") == 0) {
+		once(p, S_PEB, "peb");
+		st_peb(p, t, nt);
 	} else if (strcasecmp(kw, "grid") == 0) {
 		once(p, S_GRID, "grid");
 		st_grid(p, t, nt);
@@ -299,6 +475,7 @@ static void parse(struct lex *lx, struct bleach_input *in)
 	in->ambient = 1.0;
 	in->standing = 1;
 	in->bake = BAKE_NONE;
+	in->peb_temp = NAN;
 	char **t;
 	int nt;
 	long last = 0;
@@ -321,6 +498,38 @@ static void parse(struct lex *lx, struct bleach_input *in)
 	if (in->model != BLEACH_CANEG && in->have_crosslink)
 		die("%s:%ld: crosslink is only for develop canegative",
 		    lex_name(lx), p.seen[S_XLINK]);
+	if (p.seen[S_CAR] && !p.seen[S_PEB])
+		die("%s:%ld: car needs a peb statement (the post-exposure bake)",
+		    lex_name(lx), p.seen[S_CAR]);
+	if (p.seen[S_PEB] && !p.seen[S_CAR])
+		die("%s:%ld: peb needs a car statement (the resist's reaction constants)",
+		    lex_name(lx), p.seen[S_PEB]);
+	if (p.seen[S_CAR]) {
+		in->have_car = 1;
+		if (p.seen[S_BAKE])
+			die("%s:%ld: bake is not for a car resist (its bake is the peb statement)",
+			    lex_name(lx), p.seen[S_BAKE]);
+		if (p.seen[S_XLINK])
+			die("%s:%ld: crosslink is not for a car resist",
+			    lex_name(lx), p.seen[S_XLINK]);
+		for (int k = 0; k < ARR_COUNT; k++) {
+			struct arrh *a = &p.arr[k];
+			if (!a->used)
+				continue;
+			if (isnan(in->peb_temp))
+				die("%s:%ld: %s: ARRHENIUS needs the peb temperature", lex_name(lx),
+				    a->line, a->what);
+			double v = a->A * exp(-a->ea / (BLEACH_KB_EV * (in->peb_temp + 273.15)));
+			if (!(v >= a->min && v <= a->max))
+				die("%s:%ld: %s: ARRHENIUS gives %g at %g C, out of range [%g, %g]",
+				    lex_name(lx), a->line, a->what, v, in->peb_temp, a->min, a->max);
+			*a->dst = v;
+		}
+		double L = sqrt(2 * (in->dacid > in->dquench ? in->dacid : in->dquench) * in->peb_time);
+		if (L > 10 * in->thick)
+			die("%s:%ld: peb diffusion length sqrt(2 D t) = %g um is above ten resist "
+			    "thicknesses", lex_name(lx), p.seen[S_PEB], L);
+	}
 	if (in->diffusion > 10 * in->thick && in->bake != BAKE_NONE)
 		die("%s:%ld: bake diffusion length above ten resist thicknesses",
 		    lex_name(lx), p.seen[S_BAKE]);
@@ -404,7 +613,7 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 		num_print(f, in->diffusion);
 		fputc('\n', f);
 	}
-	static const char *mname[] = {"kim", "mack", "dill", "canegative"};
+	static const char *mname[] = {"kim", "mack", "dill", "canegative", "enhanced", "notch"};
 	fprintf(f, "develop %s ", mname[in->model]);
 	num_print_row(f, in->par, in->npar);
 	if (in->have_crosslink) {
@@ -414,6 +623,22 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 		kv(f, "order", in->order);
 		kv(f, "temperature", in->temp);
 		kv(f, "time", in->time);
+		fputc('\n', f);
+	}
+	if (in->have_car) {
+		/* rates as evaluated (an ARRHENIUS value is written as its number) */
+		fputs("car", f);
+		kv(f, "quencher", in->q0);
+		kv(f, "amplification", in->kamp);
+		kv(f, "order", in->porder);
+		kv(f, "loss", in->kloss);
+		kv(f, "quenching", in->kq);
+		fputs("\npeb", f);
+		kv(f, "time", in->peb_time);
+		kv(f, "dacid", in->dacid);
+		kv(f, "dquencher", in->dquench);
+		if (!isnan(in->peb_temp))
+			kv(f, "temperature", in->peb_temp);
 		fputc('\n', f);
 	}
 	if (in->nx > 0)

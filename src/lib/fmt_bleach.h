@@ -21,6 +21,9 @@
 #ifndef S3D_FMT_BLEACH_H
 #define S3D_FMT_BLEACH_H
 
+/* Boltzmann constant in eV/K (Arrhenius rates of car and peb). */
+#define BLEACH_KB_EV 8.617333262e-5
+
 enum {
 	BLEACH_MAX_LAYERS = 64,
 	BLEACH_MAX_NZ = 100000,     /* points through the thickness */
@@ -32,7 +35,9 @@ enum bleach_model {
 	BLEACH_KIM,         /* R1 R2 R3 [R4 R5 R6] */
 	BLEACH_MACK,        /* Rmax Rmin Mth n */
 	BLEACH_DILL,        /* E1 E2 E3 */
-	BLEACH_CANEG        /* Rmax Rmin p, plus the crosslink statement */
+	BLEACH_CANEG,       /* Rmax Rmin p, plus the crosslink statement */
+	BLEACH_MACKENH,     /* Rmax Rmin Rresin n l (Mack 1992, enhanced) */
+	BLEACH_NOTCH        /* Rmax Rmin n Mth_notch n_notch */
 };
 
 /* Post-exposure bake. */
@@ -66,6 +71,18 @@ struct bleach_input {
 	double order;               /* m */
 	double temp;                /* degrees Celsius */
 	double time;                /* s */
+	/* chemically amplified positive resist (issue 18): the car and peb
+	 * statements, rates already evaluated at the bake temperature */
+	int have_car;               /* car and peb given (they need each other) */
+	double q0;                  /* quencher, relative to the photoacid generator */
+	double kamp;                /* amplification, 1/s */
+	double porder;              /* reaction order p in acid */
+	double kloss;               /* acid loss, 1/s */
+	double kq;                  /* acid-quencher neutralisation, 1/s */
+	double peb_time;            /* s */
+	double dacid, dquench;      /* diffusivities, um2/s */
+	double peb_temp;            /* Celsius; NaN when not given */
+	long line_car, line_peb;
 	int nx, ny, nz;             /* 0 for nx, ny: the contour-file's grid */
 	long line_nz;               /* line of the grid statement (0: default) */
 	long line_dose;             /* line of the dose statement */

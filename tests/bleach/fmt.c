@@ -36,7 +36,10 @@ static void roundtrip(const char *path)
 	char *ta = strdup(slurp("a.in")), *tb = slurp("b.in");
 	if (strcmp(ta, tb) != 0 || a.dose != b.dose || a.C != b.C || a.nz != b.nz ||
 	    a.npar != b.npar || a.par[0] != b.par[0] || a.nlayers != b.nlayers ||
-	    a.bake != b.bake || a.diffusion != b.diffusion || a.k0 != b.k0) {
+	    a.bake != b.bake || a.diffusion != b.diffusion || a.k0 != b.k0 ||
+	    a.have_car != b.have_car || a.kamp != b.kamp || a.kq != b.kq || a.q0 != b.q0 ||
+	    a.dacid != b.dacid || a.dquench != b.dquench || a.peb_time != b.peb_time ||
+	    a.model != b.model || a.par[4] != b.par[4]) {
 		printf("FAIL round trip of %s\n", path);
 		failures++;
 	} else {
@@ -57,6 +60,14 @@ int main(void)
 	for (int i = 0; i < 5; i++) {
 		char p[4096];
 		snprintf(p, sizeof p, "%s/examples/resists/%s.in", top, files[i]);
+		roundtrip(p);
+	}
+	/* the CA positive resists (car, peb; ARRHENIUS written back as its
+	 * value) and the notch model */
+	static const char *more[] = {"car-krf-lines", "car-arf-contact", "notch-iline"};
+	for (int i = 0; i < 3; i++) {
+		char p[4096];
+		snprintf(p, sizeof p, "%s/examples/%s/resist.in", top, more[i]);
 		roundtrip(p);
 	}
 	struct bleach_input in;

@@ -1,0 +1,8 @@
+#!/bin/sh
+# 100 nm contact holes at ArF, NA 0.80, in a chemically amplified positive resist (bleach(5) car, peb).
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 20 -pt 10 -h -cut y 0 "$@"

@@ -1,0 +1,8 @@
+#!/bin/sh
+# 180 nm lines and spaces at KrF in a chemically amplified positive resist on a BARC (bleach(5) car, peb).
+# Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-$here/out}
+mkdir -p "$out" && cd "$out"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 40 -pt 20 -h -cut y 0 "$@"

@@ -1,0 +1,776 @@
+/*
+ * peb.c - the post-exposure bake of a chemically amplified positive
+ * resist (issue 18): acid h, quencher q and protected-site fraction m,
+ *
+ *     dh/dt = Dh lap(h) - kq h q - kloss h
+ *     dq/dt = Dq lap(q) - kq h q
+ *     dm/dt = -kamp max(h, 0)^p m,
+ *
+ * h = h0 = 1 - M of the exposure, q = q0 and m = 1 at the start; x and y
+ * periodic over the window (the last grid node repeats the first), no
+ * flux through the resist top and bottom.
+ *
+ * Integration: Strang operator splitting, nested.  The outer level splits
+ * the diffusion in x and y (slow: the image varies over 100 nm and more)
+ * from the rest, in K outer steps; inside each outer step every column is
+ * integrated on its own by n inner Strang steps of z diffusion and
+ * reaction.  The pieces:
+ *   - reaction, per point: the acid loss (h e^{-kloss t}) and the
+ *     acid-quencher neutralisation are each exact, split loss-quench-loss
+ *     (Strang) when kloss > 0.  Quenching alone keeps h - q = d, so
+ *     dh/dt = a h - kq h^2 with a = kq d, a Bernoulli equation with the
+ *     closed form h(t) = h0 e^{at} / (1 + kq h0 (e^{at} - 1)/a);
+ *     m needs only the integral of max(h,0)^p over the step: for p = 1
+ *     it is ln(1 + kq h0 (e^{at} - 1)/a) / kq, otherwise Gauss-Legendre
+ *     on subintervals graded geometrically from the reaction's time
+ *     scale (so that a quenching transient much shorter than the step is
+ *     still resolved), on the exact h(t);
+ *   - z diffusion: second-order differences (ghost nodes mirror for the
+ *     no-flux ends), TR-BDF2 in time (second order, L-stable: the stiff
+ *     grid modes that the reaction fronts excite are damped, not kept
+ *     ringing as Crank-Nicolson would);
+ *   - x, y diffusion: exact in the Fourier basis of the periodic window
+ *     (each mode times e^{-D kappa^2 dt}, by a mixed-radix FFT below).
+ * Consecutive half steps are merged; the final half diffusions are not
+ * done at all, since m after the bake depends only on the acid during
+ * the reactions.  m = exp(-kamp * integral of h^p dt) at the end.
+ *
+ * The step count is chosen at run time (peb_choose_steps): sample columns
+ * (z and reaction only) are integrated with N, 2N, 4N... steps until m
+ * changes by less than PEB_TOL between two counts; the second-order
+ * error of the finer run is then about a third of that.
+ */
+#include "bleach.h"
+#include "par.h"
+#include "util.h"
+
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void peb_params_from(struct peb_params *pp, const struct bleach_input *in)
+{
+	pp->q0 = in->q0;
+	pp->kamp = in->kamp;
+	pp->p = in->porder;
+	pp->kloss = in->kloss;
+	pp->kq = in->kq;
+	pp->t = in->peb_time;
+	pp->dh = in->dacid;
+	pp->dq = in->dquench;
+}
+
+/* (e^{x} - 1) / x, 1 at x = 0 */
+static double phi1(double x)
+{
+	return fabs(x) < 1e-300 ? 1.0 : expm1(x) / x;
+}
+
+/* h after time s from h0 >= 0, with a = kq d - kloss (h - q = d held). */
+static double acid_at(double h0, double a, double kq, double s)
+{
+	double x = a * s;
+	if (x > 1) {
+		/* growth (more acid than quencher): the form that cannot overflow */
+		double E = exp(-x);
+		return h0 * a / (a * E + kq * h0 * -expm1(-x));
+	}
+	return h0 * exp(x) / (1 + kq * h0 * s * phi1(x));
+}
+
+/* Gauss-Legendre, 3 points on [-1, 1]. */
+static const double GL_X = 0.7745966692414834, GL_W0 = 8.0 / 9.0, GL_W1 = 5.0 / 9.0;
+
+/* The acid-quencher reaction alone over tau (kloss = 0): h - q = d held,
+ * dh/dt = kq d h - kq h^2; returns the integral of h^p. */
+static double quench(const struct peb_params *pp, double tau, double *hp, double *qp)
+{
+	double h0 = *hp, q0 = *qp;
+	double kq = pp->kq, d = h0 - q0, a = kq * d;
+	if (h0 == 0)
+		return 0;       /* no acid: nothing reacts */
+	if (pp->p == 1 && kq > 0) {
+		/* h and its integral from one exponential */
+		double x = a * tau, h1, in;
+		if (x > 1) {
+			/* e^x factored out: h = h0 a / (a E + kq h0 (1 - E)) and
+			 * the integral ln(1 + kq h0 (e^x - 1)/a) / kq, E = e^{-x} */
+			double em = -expm1(-x), E = 1 - em;
+			double den = a * E + kq * h0 * em;
+			h1 = h0 * a / den;
+			in = (x + log(den / a)) / kq;
+		} else {
+			/* one expm1 gives e^x and (e^x - 1)/a */
+			double e1 = fabs(x) < 1e-300 ? 0 : expm1(x);
+			double g = kq * h0 * (e1 == 0 ? tau : e1 / a);  /* kq h0 (e^x - 1)/a */
+			h1 = h0 * (1 + e1) / (1 + g);
+			in = log1p(g) / kq;
+		}
+		*hp = h1;
+		*qp = h1 - d > 0 ? h1 - d : 0;
+		return in;
+	}
+	double h1 = acid_at(h0, a, kq, tau);
+	*hp = h1;
+	*qp = h1 - d;
+	if (*qp < 0)
+		*qp = 0;        /* rounding: q never goes below zero */
+	if (pp->p == 1)
+		return h0 * tau;        /* kq = 0: h constant */
+	/* the integral of h^p: subintervals growing geometrically (a quarter
+	 * of the elapsed time plus the fastest time scale 1/rate of h, which
+	 * follows the algebraic decay h0 / (1 + kq h0 t) when d = 0) */
+	double rate = fabs(a) + kq * h0;
+	double s0 = rate > 0 ? 0.25 / rate : tau;
+	/* and never wider than an eighth of the time scale 1/|a| of the
+	 * exponential approach that follows the transient */
+	double wmax = fabs(a) > 0 ? 0.125 / fabs(a) : tau;
+	double sum = 0, lo = 0, w = s0;
+	for (;;) {
+		if (w > wmax)
+			w = wmax;
+		double hi = lo + w;
+		if (hi > tau || w <= 0)
+			hi = tau;
+		double c = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
+		double f0 = pow(acid_at(h0, a, kq, c), pp->p);
+		double fm = pow(acid_at(h0, a, kq, c - r * GL_X), pp->p);
+		double fp = pow(acid_at(h0, a, kq, c + r * GL_X), pp->p);
+		sum += r * (GL_W0 * f0 + GL_W1 * (fm + fp));
+		if (hi >= tau)
+			break;
+		lo = hi;
+		w = s0 + 0.25 * hi;
+	}
+	return sum;
+}
+
+/* peb_react with e = exp(-kloss tau / 2) given (one exp a step, not a
+ * point). */
+static double react(const struct peb_params *pp, double tau, double e, double *hp, double *qp)
+{
+	double h = *hp > 0 ? *hp : 0, q = *qp > 0 ? *qp : 0;
+	double acc;
+	/* loss, quenching, loss (Strang): the loss alone is exact, the
+	 * quenching (with the deprotection of m) alone is exact; only their
+	 * coupling is split (e = 1 without loss, and nothing is split) */
+	h *= e;
+	acc = quench(pp, tau, &h, &q);
+	h *= e;
+	*hp = h;
+	*qp = q;
+	return acc;
+}
+
+double peb_react(const struct peb_params *pp, double tau, double *hp, double *qp)
+{
+	return react(pp, tau, exp(-pp->kloss * 0.5 * tau), hp, qp);
+}
+
+/* ---- z diffusion: TR-BDF2 on the no-flux second-difference Laplacian ---- */
+
+static const double TRB_G = 0.5857864376269050;        /* 2 - sqrt(2) */
+
+/* Thomas factors of (I - c Lap) on n nodes, s = c / dz^2: the sub- and
+ * super-diagonal are -s (-2s on the first row's super and the last row's
+ * sub, the mirrored ghost node).  inv[j] = 1 / pivot, up[j] = the
+ * eliminated super-diagonal over the pivot. */
+struct tridiag {
+	double s;
+	double *inv, *up;
+};
+
+static void tridiag_init(struct tridiag *t, int n, double s)
+{
+	t->s = s;
+	t->inv = xreallocarray(NULL, (size_t)n, sizeof *t->inv);
+	t->up = xreallocarray(NULL, (size_t)n, sizeof *t->up);
+	double prev_up = 0;
+	for (int j = 0; j < n; j++) {
+		double sub = j == 0 ? 0 : (j == n - 1 ? -2 * s : -s);
+		double sup = j == n - 1 ? 0 : (j == 0 ? -2 * s : -s);
+		double piv = 1 + 2 * s - sub * prev_up;
+		t->inv[j] = 1 / piv;
+		t->up[j] = sup / piv;
+		prev_up = t->up[j];
+	}
+}
+
+static void tridiag_free(struct tridiag *t)
+{
+	free(t->inv);
+	free(t->up);
+}
+
+/* x[j * b + i] for the b columns i: solves (I - c Lap) x = r in place. */
+static void tridiag_solve(const struct tridiag *t, int n, size_t b, double *x)
+{
+	double s = t->s;
+	for (int j = 0; j < n; j++) {
+		double *xj = x + (size_t)j * b;
+		double sub = j == 0 ? 0 : (j == n - 1 ? -2 * s : -s);
+		if (j > 0) {
+			const double *xp = xj - b;
+			for (size_t i = 0; i < b; i++)
+				xj[i] = (xj[i] - sub * xp[i]) * t->inv[j];
+		} else {
+			for (size_t i = 0; i < b; i++)
+				xj[i] *= t->inv[0];
+		}
+	}
+	for (int j = n - 2; j >= 0; j--) {
+		double *xj = x + (size_t)j * b;
+		const double *xn = xj + b;
+		double u = t->up[j];
+		for (size_t i = 0; i < b; i++)
+			xj[i] -= u * xn[i];
+	}
+}
+
+/* One TR-BDF2 step of u' = D Lap u for the b columns of u[j * b + i],
+ * with the factors of the two stages (c1 = g tau / 2, c2 = (1-g)/(2-g)
+ * tau); y and w are scratch of the same size. */
+struct zstep {
+	int on;                 /* 0: D = 0, nothing to do */
+	double s1;              /* g tau D / (2 dz^2), the explicit half */
+	struct tridiag a, b;
+};
+
+static void zstep_init(struct zstep *z, int n, double D, double dz, double tau)
+{
+	memset(z, 0, sizeof *z);
+	if (!(D > 0) || n < 2 || !(tau > 0))
+		return;
+	z->on = 1;
+	double k = D / (dz * dz);
+	z->s1 = 0.5 * TRB_G * tau * k;
+	tridiag_init(&z->a, n, z->s1);
+	tridiag_init(&z->b, n, (1 - TRB_G) / (2 - TRB_G) * tau * k);
+}
+
+static void zstep_free(struct zstep *z)
+{
+	if (!z->on)
+		return;
+	tridiag_free(&z->a);
+	tridiag_free(&z->b);
+}
+
+static void zstep_apply(const struct zstep *z, int n, size_t b, double *u, double *y)
+{
+	if (!z->on)
+		return;
+	double s = z->s1;
+	/* stage 1, trapezoid over g tau: y = (I + s Lap) u, then solved */
+	for (int j = 0; j < n; j++) {
+		const double *uj = u + (size_t)j * b;
+		const double *um = j > 0 ? uj - b : uj + b;     /* mirrored ghost */
+		const double *up = j < n - 1 ? uj + b : uj - b;
+		double *yj = y + (size_t)j * b;
+		for (size_t i = 0; i < b; i++)
+			yj[i] = uj[i] + s * (um[i] - 2 * uj[i] + up[i]);
+	}
+	tridiag_solve(&z->a, n, b, y);
+	/* stage 2, BDF2 through u, y and the new u */
+	double c1 = 1 / (TRB_G * (2 - TRB_G));
+	double c0 = (1 - TRB_G) * (1 - TRB_G) * c1;
+	size_t nb = (size_t)n * b;
+	for (size_t k = 0; k < nb; k++)
+		u[k] = c1 * y[k] - c0 * u[k];
+	tridiag_solve(&z->b, n, b, u);
+}
+
+/* ---- x-y diffusion: exact in the Fourier basis, by a mixed-radix FFT ---- */
+
+/* A complex DFT of any length n (recursive decimation in time, radix the
+ * smallest prime factor, the direct sum for that factor), X[k] =
+ * sum_j x[j] e^{-2 pi i j k / n}.  The periods here are the window's
+ * nx - 1 samples (99 = 3 * 3 * 11 for 100 points), which a radix-2
+ * transform would not take; a matrix product costs n per point instead
+ * of the sum of the factors.  (src/lib has no FFT yet; when it has, this
+ * goes.) */
+struct dft {
+	int n;
+	double complex *tw;     /* e^{-2 pi i j / n}, j < n */
+	double complex *buf;    /* n scratch values */
+};
+
+/* complex product without the C99 checks for infinities (the values
+ * here are finite), which made the transform five times slower */
+static inline double complex cmul(double complex a, double complex b)
+{
+	double ar = creal(a), ai = cimag(a), br = creal(b), bi = cimag(b);
+	return CMPLX(ar * br - ai * bi, ar * bi + ai * br);
+}
+
+static void dft_init(struct dft *d, int n)
+{
+	d->n = n;
+	d->tw = xreallocarray(NULL, (size_t)n, sizeof *d->tw);
+	d->buf = xreallocarray(NULL, (size_t)n, sizeof *d->buf);
+	for (int j = 0; j < n; j++)
+		d->tw[j] = cexp(-2 * M_PI * I * (double)j / n);
+}
+
+static void dft_free(struct dft *d)
+{
+	free(d->tw);
+	free(d->buf);
+}
+
+/* out[0..n) = DFT of in[0], in[s], ... in[(n-1) s]; W_n^j = tw[j * ts] */
+static void dft_rec(const struct dft *d, const double complex *in, double complex *out,
+		    int n, int s, int ts)
+{
+	if (n == 1) {
+		out[0] = in[0];
+		return;
+	}
+	int r = 2;
+	while (r * r <= n && n % r)
+		r++;
+	if (n % r) {
+		/* n prime: the direct sum, W_n^j = tw[j ts] */
+		for (int k = 0; k < n; k++) {
+			double complex acc = 0;
+			for (int q = 0, e = 0; q < n; q++) {
+				acc += cmul(in[(size_t)q * s], d->tw[(size_t)e * ts]);
+				e += k;
+				if (e >= n)
+					e -= n;
+			}
+			out[k] = acc;
+		}
+		return;
+	}
+	int m = n / r;
+	for (int q = 0; q < r; q++)
+		dft_rec(d, in + (size_t)q * s, out + (size_t)q * m, m, s * r, ts * r);
+	/* X[k + u m] = sum_q W_r^{q u} (W_n^{q k} Y_q[k]): twiddle, then a
+	 * direct DFT of length r */
+	double complex t[2 * 64], *tmp = r <= 64 ? t : xreallocarray(NULL, 2 * (size_t)r, sizeof *tmp);
+	double complex *wr = tmp + r;
+	for (int j = 0; j < r; j++)
+		wr[j] = d->tw[(size_t)j * m * ts];      /* W_r^j = W_N^{j N / r} */
+	for (int k = 0; k < m; k++) {
+		tmp[0] = out[k];
+		for (int q = 1; q < r; q++)
+			tmp[q] = k ? cmul(out[(size_t)q * m + k], d->tw[(size_t)q * k * ts])
+				   : out[(size_t)q * m];
+		for (int u = 0; u < r; u++) {
+			double complex acc = 0;
+			for (int q = 0, e = 0; q < r; q++) {
+				acc += cmul(tmp[q], wr[e]);
+				e += u;
+				if (e >= r)
+					e -= r;
+			}
+			out[k + u * m] = acc;
+		}
+	}
+	if (tmp != t)
+		free(tmp);
+}
+
+/* x[0..n) replaced by its DFT (forward) or n times its inverse DFT. */
+static void dft_run(const struct dft *d, double complex *x, int inverse)
+{
+	int n = d->n;
+	if (inverse)
+		for (int j = 0; j < n; j++)
+			x[j] = conj(x[j]);
+	dft_rec(d, x, d->buf, n, 1, 1);
+	for (int j = 0; j < n; j++)
+		x[j] = inverse ? conj(d->buf[j]) : d->buf[j];
+}
+
+/* The heat-equation factors e^{-D kappa^2 t} of the p Fourier modes of a
+ * period of p samples spacing h, divided by p (the inverse's scale). */
+static double *heat_factors(int p, double h, double Dt)
+{
+	double *g = xreallocarray(NULL, (size_t)p, sizeof *g);
+	double L = p * h;
+	for (int m = 0; m < p; m++) {
+		int mf = m <= p / 2 ? m : m - p;
+		double kappa = 2 * M_PI * mf / L;
+		g[m] = exp(-Dt * kappa * kappa) / p;
+	}
+	return g;
+}
+
+struct xy_pass {
+	double *f;
+	int nx, ny;
+	const double *gx, *gy;          /* NULL: that direction is not done */
+	struct dft *dx, *dy;            /* per worker */
+	double complex *row;            /* per worker: max(px, py) */
+};
+
+/* Two real rows at once as the real and imaginary parts of one complex
+ * row: the factors are real and even in the wavenumber, so the two never
+ * mix. */
+static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct xy_pass *x = ctx;
+	int nx = x->nx, ny = x->ny, px = nx - 1, py = ny - 1;
+	struct dft *dxw = x->dx + worker, *dyw = x->dy + worker;
+	double complex *z = x->row + (size_t)worker * (size_t)(px > py ? px : py);
+	for (size_t k = lo; k < hi; k++) {
+		double *pl = x->f + k * (size_t)nx * ny;
+		if (x->gx)
+			for (int j = 0; j < ny; j += 2) {
+				double *a = pl + (size_t)j * nx;
+				double *b = j + 1 < ny ? a + nx : NULL;
+				for (int i = 0; i < px; i++)
+					z[i] = a[i] + I * (b ? b[i] : 0);
+				dft_run(dxw, z, 0);
+				for (int i = 0; i < px; i++)
+					z[i] *= x->gx[i];
+				dft_run(dxw, z, 1);
+				for (int i = 0; i < px; i++) {
+					a[i] = creal(z[i]);
+					if (b)
+						b[i] = cimag(z[i]);
+				}
+				a[px] = a[0];
+				if (b)
+					b[px] = b[0];
+			}
+		if (x->gy)
+			for (int i = 0; i < nx; i += 2) {
+				int i2 = i + 1 < nx ? i + 1 : -1;
+				for (int j = 0; j < py; j++)
+					z[j] = pl[(size_t)j * nx + i] + I * (i2 >= 0 ? pl[(size_t)j * nx + i2] : 0);
+				dft_run(dyw, z, 0);
+				for (int j = 0; j < py; j++)
+					z[j] *= x->gy[j];
+				dft_run(dyw, z, 1);
+				for (int j = 0; j < py; j++) {
+					pl[(size_t)j * nx + i] = creal(z[j]);
+					if (i2 >= 0)
+						pl[(size_t)j * nx + i2] = cimag(z[j]);
+				}
+				pl[(size_t)py * nx + i] = pl[i];
+				if (i2 >= 0)
+					pl[(size_t)py * nx + i2] = pl[i2];
+			}
+	}
+}
+
+/* f (nz planes of nx * ny, periodic with the last node repeating the
+ * first) after diffusing D for t in x and y: each Fourier mode times
+ * e^{-D kappa^2 t}, exactly. */
+static void diffuse_xy(double *f, int nx, int ny, int nz, double hx, double hy, double D, double t)
+{
+	int px = nx - 1, py = ny - 1;
+	if (!(D > 0) || !(t > 0) || (px < 2 && py < 2))
+		return;
+	int nw = par_threads();
+	struct xy_pass x = {f, nx, ny, px >= 2 ? heat_factors(px, hx, D * t) : NULL,
+			    py >= 2 ? heat_factors(py, hy, D * t) : NULL,
+			    xcalloc((size_t)nw, sizeof(struct dft)), xcalloc((size_t)nw, sizeof(struct dft)),
+			    xreallocarray(NULL, (size_t)nw * (size_t)(px > py ? px : py),
+					  sizeof(double complex))};
+	for (int w = 0; w < nw; w++) {
+		if (x.gx)
+			dft_init(&x.dx[w], px);
+		if (x.gy)
+			dft_init(&x.dy[w], py);
+	}
+	par_for((size_t)nz, 1, xy_planes, &x);
+	for (int w = 0; w < nw; w++) {
+		if (x.gx)
+			dft_free(&x.dx[w]);
+		if (x.gy)
+			dft_free(&x.dy[w]);
+	}
+	free(x.dx);
+	free(x.dy);
+	free(x.row);
+	free((void *)x.gx);
+	free((void *)x.gy);
+}
+
+/* ---- the column integration (z diffusion and reaction) ---- */
+
+/* The z operators of one inner step, acid and quencher. */
+struct zops {
+	struct zstep h_full, q_full;
+};
+
+static void zops_init(struct zops *o, const struct peb_params *pp, int nz, double dz, double dt)
+{
+	zstep_init(&o->h_full, nz, pp->dh, dz, dt);
+	zstep_init(&o->q_full, nz, pp->dq, dz, dt);
+}
+
+static void zops_free(struct zops *o)
+{
+	zstep_free(&o->h_full);
+	zstep_free(&o->q_full);
+}
+
+/* n inner Strang steps of dt on b columns H, Q, A ([j * b + i]):
+ * reaction dt/2, then n - 1 times z diffusion dt and reaction dt, then z
+ * diffusion dt and reaction dt/2 (the reaction halves at the ends: the
+ * m integral sees the acid right up to the end of the bake). */
+static void columns_steps(const struct peb_params *pp, const struct zops *o, int nz, size_t b,
+			  double *H, double *Q, double *A, double *y, int n, double dt)
+{
+	size_t nb = (size_t)nz * b;
+	for (int s = 0; s <= n; s++) {
+		double tr = s == 0 || s == n ? 0.5 * dt : dt;
+		double e = exp(-pp->kloss * 0.5 * tr);
+		for (size_t k = 0; k < nb; k++)
+			A[k] += react(pp, tr, e, &H[k], &Q[k]);
+		if (s < n) {
+			zstep_apply(&o->h_full, nz, b, H, y);
+			zstep_apply(&o->q_full, nz, b, Q, y);
+		}
+	}
+}
+
+/* Columns per block: the block's H, Q, A and scratch stay in cache. */
+#define PEB_BLOCK 32
+
+struct peb_pass {
+	const struct peb_params *pp;
+	const struct zops *o;
+	double *H, *Q, *A;      /* [k * ncol + q] */
+	size_t ncol;
+	int nz, n;
+	double dt;
+	double *scratch;        /* per worker: 4 nz PEB_BLOCK */
+};
+
+static void pass_blocks(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct peb_pass *p = ctx;
+	int nz = p->nz;
+	size_t per = (size_t)nz * PEB_BLOCK;
+	double *H = p->scratch + (size_t)worker * 4 * per, *Q = H + per, *A = Q + per, *y = A + per;
+	for (size_t blk = lo; blk < hi; blk++) {
+		size_t q0 = blk * PEB_BLOCK;
+		size_t b = p->ncol - q0 < PEB_BLOCK ? p->ncol - q0 : PEB_BLOCK;
+		for (int k = 0; k < nz; k++) {
+			size_t g = (size_t)k * p->ncol + q0;
+			memcpy(H + (size_t)k * b, p->H + g, b * sizeof *H);
+			memcpy(Q + (size_t)k * b, p->Q + g, b * sizeof *Q);
+			memcpy(A + (size_t)k * b, p->A + g, b * sizeof *A);
+		}
+		columns_steps(p->pp, p->o, nz, b, H, Q, A, y, p->n, p->dt);
+		for (int k = 0; k < nz; k++) {
+			size_t g = (size_t)k * p->ncol + q0;
+			memcpy(p->H + g, H + (size_t)k * b, b * sizeof *H);
+			memcpy(p->Q + g, Q + (size_t)k * b, b * sizeof *Q);
+			memcpy(p->A + g, A + (size_t)k * b, b * sizeof *A);
+		}
+	}
+}
+
+void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
+	     double dx, double dy, double dz, int nouter, int ninner, double *hout)
+{
+	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
+	double *H = f;          /* h0 in, m out */
+	double *Q = xreallocarray(NULL, np, sizeof *Q);
+	double *A = xcalloc(np, sizeof *A);
+	for (size_t k = 0; k < np; k++) {
+		Q[k] = pp->q0;
+		if (!(H[k] > 0))
+			H[k] = 0;
+		if (H[k] > 1)
+			H[k] = 1;
+	}
+	int xy = (nx > 2 || ny > 2) && (pp->dh > 0 || pp->dq > 0);
+	if (!xy)
+		nouter = 1;
+	double Dt = pp->t / nouter, dt = Dt / ninner;
+	struct zops o;
+	zops_init(&o, pp, nz, dz, dt);
+	size_t nblk = (ncol + PEB_BLOCK - 1) / PEB_BLOCK;
+	struct peb_pass pass = {pp, &o, H, Q, A, ncol, nz, ninner, dt,
+				xreallocarray(NULL, (size_t)par_threads() * 4 * (size_t)nz,
+					      PEB_BLOCK * sizeof(double))};
+	if (pp->t > 0) {
+		for (int s = 0; s < nouter; s++) {
+			double tx = s == 0 ? 0.5 * Dt : Dt;
+			if (xy) {
+				diffuse_xy(H, nx, ny, nz, dx, dy, pp->dh, tx);
+				diffuse_xy(Q, nx, ny, nz, dx, dy, pp->dq, tx);
+			}
+			par_for(nblk, 1, pass_blocks, &pass);
+		}
+	}
+	if (hout) {
+		/* the acid at the end: the last x-y half step, which m does not
+		 * need, completes it */
+		if (xy && pp->t > 0)
+			diffuse_xy(H, nx, ny, nz, dx, dy, pp->dh, 0.5 * Dt);
+		memcpy(hout, H, np * sizeof *H);
+	}
+	for (size_t k = 0; k < np; k++)
+		f[k] = exp(-pp->kamp * A[k]);
+	free(pass.scratch);
+	zops_free(&o);
+	free(Q);
+	free(A);
+}
+
+void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz, int nsteps)
+{
+	peb_run(pp, f, (int)ncol, 1, nz, 1, 1, dz, 1, nsteps, NULL);
+}
+
+/* Sample columns for the step choice. */
+#define PEB_SAMPLES 9
+
+int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol, int nz,
+		     double dz, double *change)
+{
+	/* the columns of least and most acid and quantiles between, by
+	 * column mean: each with its own reaction and front history */
+	double *mean = xreallocarray(NULL, ncol, sizeof *mean);
+	size_t *idx = xreallocarray(NULL, ncol, sizeof *idx);
+	for (size_t q = 0; q < ncol; q++) {
+		double s = 0;
+		for (int k = 0; k < nz; k++)
+			s += h0[(size_t)k * ncol + q];
+		mean[q] = s;
+		idx[q] = q;
+	}
+	/* insertion-free selection: sort indices by mean (ties by index, so
+	 * the choice is deterministic) */
+	for (size_t i = 1; i < ncol; i++) {
+		size_t v = idx[i], j = i;
+		if (ncol > 4096)
+			break;  /* large windows: sampled below by stride instead */
+		while (j > 0 && (mean[idx[j - 1]] > mean[v] ||
+				 (mean[idx[j - 1]] == mean[v] && idx[j - 1] > v))) {
+			idx[j] = idx[j - 1];
+			j--;
+		}
+		idx[j] = v;
+	}
+	size_t ns = ncol < PEB_SAMPLES ? ncol : PEB_SAMPLES;
+	size_t pick[PEB_SAMPLES];
+	if (ncol > 4096) {
+		/* most and least acid, and columns spread over the window */
+		size_t qmin = 0, qmax = 0;
+		for (size_t q = 1; q < ncol; q++) {
+			if (mean[q] < mean[qmin]) qmin = q;
+			if (mean[q] > mean[qmax]) qmax = q;
+		}
+		pick[0] = qmin;
+		pick[1] = qmax;
+		for (size_t s = 2; s < ns; s++)
+			pick[s] = (s - 1) * ncol / ns;
+	} else {
+		for (size_t s = 0; s < ns; s++)
+			pick[s] = idx[ns > 1 ? s * (ncol - 1) / (ns - 1) : 0];
+	}
+	size_t nn = ns * (size_t)nz;
+	double *col = xreallocarray(NULL, nn, sizeof *col);
+	double *a = xreallocarray(NULL, nn, sizeof *a);
+	double *b = xreallocarray(NULL, nn, sizeof *b);
+	for (int k = 0; k < nz; k++)
+		for (size_t s = 0; s < ns; s++)
+			col[(size_t)k * ns + s] = h0[(size_t)k * ncol + pick[s]];
+	int n = PEB_MIN_STEPS;
+	memcpy(a, col, nn * sizeof *a);
+	peb_columns(pp, a, ns, nz, dz, n);
+	double diff = 0;
+	for (;;) {
+		memcpy(b, col, nn * sizeof *b);
+		peb_columns(pp, b, ns, nz, dz, 2 * n);
+		diff = 0;
+		for (size_t k = 0; k < nn; k++)
+			if (fabs(a[k] - b[k]) > diff)
+				diff = fabs(a[k] - b[k]);
+		n *= 2;
+		if (diff < PEB_TOL || n >= PEB_MAX_STEPS)
+			break;
+		memcpy(a, b, nn * sizeof *a);
+	}
+	if (change)
+		*change = diff;
+	free(mean);
+	free(idx);
+	free(col);
+	free(a);
+	free(b);
+	return n;
+}
+
+/* m of an x-z slice (row j) or a y-z slice (column i) of h0 after the
+ * bake in nouter x-y steps of n / nouter column steps, into out. */
+static void slice_run(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		      double dx, double dy, double dz, int along_x, int at, int n, int nouter,
+		      double *out)
+{
+	int len = along_x ? nx : ny;
+	size_t ncol = (size_t)nx * (size_t)ny;
+	for (int k = 0; k < nz; k++)
+		for (int s = 0; s < len; s++)
+			out[(size_t)k * len + s] = h0[(size_t)k * ncol +
+				(along_x ? (size_t)at * nx + s : (size_t)s * nx + at)];
+	peb_run(pp, out, len, 1, nz, along_x ? dx : dy, 1, dz, nouter, n / nouter, NULL);
+}
+
+int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
+		     double dx, double dy, double dz, int n, double *change)
+{
+	if (change)
+		*change = 0;
+	if ((nx <= 2 && ny <= 2) || !(pp->dh > 0 || pp->dq > 0))
+		return 1;
+	/* the slices through the column where the column-mean acid changes
+	 * most from its neighbours in x and y: the steepest image edge */
+	size_t ncol = (size_t)nx * (size_t)ny;
+	double *c = xcalloc(ncol, sizeof *c);
+	for (int k = 0; k < nz; k++)
+		for (size_t q = 0; q < ncol; q++)
+			c[q] += h0[(size_t)k * ncol + q];
+	int bi = 0, bj = 0;
+	double best = -1;
+	for (int j = 0; j + 1 < ny || (ny == 1 && j == 0); j++)
+		for (int i = 0; i + 1 < nx; i++) {
+			size_t q = (size_t)j * nx + i;
+			double g = fabs(c[q + 1] - c[q]) + (j + 1 < ny ? fabs(c[q + nx] - c[q]) : 0);
+			if (g > best) {
+				best = g;
+				bi = i;
+				bj = j;
+			}
+		}
+	free(c);
+	int len = nx > ny ? nx : ny;
+	double *a = xreallocarray(NULL, (size_t)len * nz, sizeof *a);
+	double *b = xreallocarray(NULL, (size_t)len * nz, sizeof *b);
+	int K = n / PEB_OUTER_START > 0 ? n / PEB_OUTER_START : 1;
+	double diff = 0;
+	for (;;) {
+		if (K >= n)
+			break;
+		diff = 0;
+		for (int dir = 0; dir < 2; dir++) {
+			int l = dir == 0 ? nx : ny;
+			if (l <= 2)
+				continue;
+			slice_run(pp, h0, nx, ny, nz, dx, dy, dz, dir == 0, dir == 0 ? bj : bi, n, K, a);
+			slice_run(pp, h0, nx, ny, nz, dx, dy, dz, dir == 0, dir == 0 ? bj : bi, n, 2 * K, b);
+			for (size_t s = 0; s < (size_t)l * nz; s++)
+				if (fabs(a[s] - b[s]) > diff)
+					diff = fabs(a[s] - b[s]);
+		}
+		K *= 2;
+		if (diff < PEB_TOL)
+			break;
+	}
+	free(a);
+	free(b);
+	if (change)
+		*change = diff;
+	return K < n ? K : n;
+}
