@@ -30,7 +30,7 @@
  *     grid modes that the reaction fronts excite are damped, not kept
  *     ringing as Crank-Nicolson would);
  *   - x, y diffusion: exact in the Fourier basis of the periodic window
- *     (each mode times e^{-D kappa^2 dt}, by a mixed-radix FFT below).
+ *     (each mode times e^{-D kappa^2 dt}, by fft.h's transform).
  * Consecutive half steps are merged; the final half diffusions are not
  * done at all, since m after the bake depends only on the acid during
  * the reactions.  m = exp(-kamp * integral of h^p dt) at the end.
@@ -41,6 +41,7 @@
  * error of the finer run is then about a third of that.
  */
 #include "bleach.h"
+#include "fft.h"
 #include "par.h"
 #include "util.h"
 
@@ -281,108 +282,31 @@ static void zstep_apply(const struct zstep *z, int n, size_t b, double *u, doubl
 	tridiag_solve(&z->b, n, b, u);
 }
 
-/* ---- x-y diffusion: exact in the Fourier basis, by a mixed-radix FFT ---- */
+/* ---- x-y diffusion: exact in the Fourier basis, by the library's FFT ---- */
 
-/* A complex DFT of any length n (recursive decimation in time, radix the
- * smallest prime factor, the direct sum for that factor), X[k] =
- * sum_j x[j] e^{-2 pi i j k / n}.  The periods here are the window's
- * nx - 1 samples (99 = 3 * 3 * 11 for 100 points), which a radix-2
- * transform would not take; a matrix product costs n per point instead
- * of the sum of the factors.  (src/lib has no FFT yet; when it has, this
- * goes.) */
+/* The periods here are the window's nx - 1 samples (99 = 3 * 3 * 11 for
+ * 100 points), which fft.h takes at any length. */
 struct dft {
-	int n;
-	double complex *tw;     /* e^{-2 pi i j / n}, j < n */
-	double complex *buf;    /* n scratch values */
+	struct fft_plan *fwd, *bwd;     /* read-only, shared by the workers */
 };
-
-/* complex product without the C99 checks for infinities (the values
- * here are finite), which made the transform five times slower */
-static inline double complex cmul(double complex a, double complex b)
-{
-	double ar = creal(a), ai = cimag(a), br = creal(b), bi = cimag(b);
-	return CMPLX(ar * br - ai * bi, ar * bi + ai * br);
-}
 
 static void dft_init(struct dft *d, int n)
 {
-	d->n = n;
-	d->tw = xreallocarray(NULL, (size_t)n, sizeof *d->tw);
-	d->buf = xreallocarray(NULL, (size_t)n, sizeof *d->buf);
-	for (int j = 0; j < n; j++)
-		d->tw[j] = cexp(-2 * M_PI * I * (double)j / n);
+	d->fwd = fft_plan_new((size_t)n, -1);
+	d->bwd = fft_plan_new((size_t)n, +1);
 }
 
 static void dft_free(struct dft *d)
 {
-	free(d->tw);
-	free(d->buf);
+	fft_plan_free(d->fwd);
+	fft_plan_free(d->bwd);
 }
 
-/* out[0..n) = DFT of in[0], in[s], ... in[(n-1) s]; W_n^j = tw[j * ts] */
-static void dft_rec(const struct dft *d, const double complex *in, double complex *out,
-		    int n, int s, int ts)
+/* work values a worker needs for d */
+static size_t dft_work(const struct dft *d)
 {
-	if (n == 1) {
-		out[0] = in[0];
-		return;
-	}
-	int r = 2;
-	while (r * r <= n && n % r)
-		r++;
-	if (n % r) {
-		/* n prime: the direct sum, W_n^j = tw[j ts] */
-		for (int k = 0; k < n; k++) {
-			double complex acc = 0;
-			for (int q = 0, e = 0; q < n; q++) {
-				acc += cmul(in[(size_t)q * s], d->tw[(size_t)e * ts]);
-				e += k;
-				if (e >= n)
-					e -= n;
-			}
-			out[k] = acc;
-		}
-		return;
-	}
-	int m = n / r;
-	for (int q = 0; q < r; q++)
-		dft_rec(d, in + (size_t)q * s, out + (size_t)q * m, m, s * r, ts * r);
-	/* X[k + u m] = sum_q W_r^{q u} (W_n^{q k} Y_q[k]): twiddle, then a
-	 * direct DFT of length r */
-	double complex t[2 * 64], *tmp = r <= 64 ? t : xreallocarray(NULL, 2 * (size_t)r, sizeof *tmp);
-	double complex *wr = tmp + r;
-	for (int j = 0; j < r; j++)
-		wr[j] = d->tw[(size_t)j * m * ts];      /* W_r^j = W_N^{j N / r} */
-	for (int k = 0; k < m; k++) {
-		tmp[0] = out[k];
-		for (int q = 1; q < r; q++)
-			tmp[q] = k ? cmul(out[(size_t)q * m + k], d->tw[(size_t)q * k * ts])
-				   : out[(size_t)q * m];
-		for (int u = 0; u < r; u++) {
-			double complex acc = 0;
-			for (int q = 0, e = 0; q < r; q++) {
-				acc += cmul(tmp[q], wr[e]);
-				e += u;
-				if (e >= r)
-					e -= r;
-			}
-			out[k + u * m] = acc;
-		}
-	}
-	if (tmp != t)
-		free(tmp);
-}
-
-/* x[0..n) replaced by its DFT (forward) or n times its inverse DFT. */
-static void dft_run(const struct dft *d, double complex *x, int inverse)
-{
-	int n = d->n;
-	if (inverse)
-		for (int j = 0; j < n; j++)
-			x[j] = conj(x[j]);
-	dft_rec(d, x, d->buf, n, 1, 1);
-	for (int j = 0; j < n; j++)
-		x[j] = inverse ? conj(d->buf[j]) : d->buf[j];
+	size_t a = fft_work_size(d->fwd), b = fft_work_size(d->bwd);
+	return a > b ? a : b;
 }
 
 /* The heat-equation factors e^{-D kappa^2 t} of the p Fourier modes of a
@@ -403,8 +327,10 @@ struct xy_pass {
 	double *f;
 	int nx, ny;
 	const double *gx, *gy;          /* NULL: that direction is not done */
-	struct dft *dx, *dy;            /* per worker */
+	struct dft dx, dy;
 	double complex *row;            /* per worker: max(px, py) */
+	double complex *work;           /* per worker: nwork */
+	size_t nwork;
 };
 
 /* Two real rows at once as the real and imaginary parts of one complex
@@ -414,8 +340,8 @@ static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
 {
 	struct xy_pass *x = ctx;
 	int nx = x->nx, ny = x->ny, px = nx - 1, py = ny - 1;
-	struct dft *dxw = x->dx + worker, *dyw = x->dy + worker;
 	double complex *z = x->row + (size_t)worker * (size_t)(px > py ? px : py);
+	double complex *w = x->work + (size_t)worker * x->nwork;
 	for (size_t k = lo; k < hi; k++) {
 		double *pl = x->f + k * (size_t)nx * ny;
 		if (x->gx)
@@ -424,10 +350,10 @@ static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
 				double *b = j + 1 < ny ? a + nx : NULL;
 				for (int i = 0; i < px; i++)
 					z[i] = a[i] + I * (b ? b[i] : 0);
-				dft_run(dxw, z, 0);
+				fft_exec(x->dx.fwd, z, w);
 				for (int i = 0; i < px; i++)
 					z[i] *= x->gx[i];
-				dft_run(dxw, z, 1);
+				fft_exec(x->dx.bwd, z, w);
 				for (int i = 0; i < px; i++) {
 					a[i] = creal(z[i]);
 					if (b)
@@ -442,10 +368,10 @@ static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
 				int i2 = i + 1 < nx ? i + 1 : -1;
 				for (int j = 0; j < py; j++)
 					z[j] = pl[(size_t)j * nx + i] + I * (i2 >= 0 ? pl[(size_t)j * nx + i2] : 0);
-				dft_run(dyw, z, 0);
+				fft_exec(x->dy.fwd, z, w);
 				for (int j = 0; j < py; j++)
 					z[j] *= x->gy[j];
-				dft_run(dyw, z, 1);
+				fft_exec(x->dy.bwd, z, w);
 				for (int j = 0; j < py; j++) {
 					pl[(size_t)j * nx + i] = creal(z[j]);
 					if (i2 >= 0)
@@ -468,25 +394,25 @@ static void diffuse_xy(double *f, int nx, int ny, int nz, double hx, double hy, 
 		return;
 	int nw = par_threads();
 	struct xy_pass x = {f, nx, ny, px >= 2 ? heat_factors(px, hx, D * t) : NULL,
-			    py >= 2 ? heat_factors(py, hy, D * t) : NULL,
-			    xcalloc((size_t)nw, sizeof(struct dft)), xcalloc((size_t)nw, sizeof(struct dft)),
+			    py >= 2 ? heat_factors(py, hy, D * t) : NULL, {NULL, NULL}, {NULL, NULL},
 			    xreallocarray(NULL, (size_t)nw * (size_t)(px > py ? px : py),
-					  sizeof(double complex))};
-	for (int w = 0; w < nw; w++) {
-		if (x.gx)
-			dft_init(&x.dx[w], px);
-		if (x.gy)
-			dft_init(&x.dy[w], py);
+					  sizeof(double complex)), NULL, 0};
+	if (x.gx) {
+		dft_init(&x.dx, px);
+		x.nwork = dft_work(&x.dx);
 	}
+	if (x.gy) {
+		dft_init(&x.dy, py);
+		if (dft_work(&x.dy) > x.nwork)
+			x.nwork = dft_work(&x.dy);
+	}
+	x.work = xreallocarray(NULL, (size_t)nw * (x.nwork ? x.nwork : 1), sizeof(double complex));
 	par_for((size_t)nz, 1, xy_planes, &x);
-	for (int w = 0; w < nw; w++) {
-		if (x.gx)
-			dft_free(&x.dx[w]);
-		if (x.gy)
-			dft_free(&x.dy[w]);
-	}
-	free(x.dx);
-	free(x.dy);
+	if (x.gx)
+		dft_free(&x.dx);
+	if (x.gy)
+		dft_free(&x.dy);
+	free(x.work);
 	free(x.row);
 	free((void *)x.gx);
 	free((void *)x.gy);
