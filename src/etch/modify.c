@@ -107,7 +107,7 @@ void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 		 const struct etch_opts *o, struct etch_stats *st)
 {
 	double smax = o->smax * seg, smin = o->smin * seg;
-	long limit = (long)(OPS_PER_TRI * m->ntri) + 64, ops = 0;
+	long limit = (long)(OPS_PER_TRI * m->live_tri) + 64, ops = 0;
 	for (size_t t = 0; t < m->ntri && ops < limit; t++) {
 		const struct triangle *tr = &m->tri[t];
 		if (!tr->alive)
