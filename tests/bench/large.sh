@@ -8,6 +8,10 @@
 # Targets (issue 15): 40 um under 10 min wall and 8 GB, 20 um under
 # 2 min, fmm 20 um under 5 min.  Asserts nothing.
 #
+# Disk: the 40 um run writes 7 GB (a 3.1 GB rate file, a 1.7 GB
+# curves.plot); fmm20 writes tens of GB until etch -method fmm writes
+# compact surfaces (issue 15).
+#
 # Environment: LARGE_RUNS, the runs to make (default "ray20 ray40 fmm20");
 # LARGE_TILE=1 replaces splat by the image of a 4 um window tiled over
 # the window (the array is periodic, so that image is the same
