@@ -230,7 +230,9 @@ void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sig
 {
 	int px = nx - 1, py = ny - 1;
 	size_t nw = (size_t)par_threads();
-	if (px >= 2) {
+	if (bake_iir_wanted(px, dx, sigma)) {
+		bake_iir_x(f, nx, ny, nz, dx, sigma);
+	} else if (px >= 2) {
 		int h;
 		double *c = taps(px, dx, sigma, &h);
 		struct xpass x = {f, nx, px, h, c,
@@ -239,7 +241,9 @@ void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sig
 		free(x.scratch);
 		free(c);
 	}
-	if (py >= 2) {
+	if (bake_iir_wanted(py, dy, sigma)) {
+		bake_iir_y(f, nx, ny, nz, dy, sigma);
+	} else if (py >= 2) {
 		int h;
 		double *c = taps(py, dy, sigma, &h);
 		struct ypass y = {f, nx, py, h, c,

@@ -122,6 +122,15 @@ void bake_apply(const double *S, int n, double *v, size_t stride, double *work);
  * with nx - 1 and ny - 1 samples a period (the last node repeats the
  * first, as splat's window does). */
 void bake_xy(double *f, int nx, int ny, int nz, double dx, double dy, double sigma);
+
+/* ---- bake_iir.c: the x-y bake of a fine grid, recursive (Deriche) ---- */
+/* Exact taps per point beyond which bake_xy smooths recursively. */
+#define BAKE_IIR_TAPS 64
+/* Whether a pass over period p samples of spacing d is done recursively. */
+int bake_iir_wanted(int p, double d, double sigma);
+/* The x (y) pass of bake_xy by the recursive Gaussian, every plane. */
+void bake_iir_x(double *f, int nx, int ny, int nz, double dx, double sigma);
+void bake_iir_y(double *f, int nx, int ny, int nz, double dy, double sigma);
 /* Each row of rows (nrows rows of n values, spacing d) smoothed. */
 void bake_rows(double *rows, int nrows, int n, double d, double sigma);
 /* The same for the rows of a and of b (b may be NULL), one matrix. */

@@ -50,12 +50,12 @@ static const char usage[] =
 static const double DOSE_MAX = 1e6;
 
 /* Seconds per rate point (exposure lookup, bake, development rate) and
- * per number written, measured on the development machine; bytes per
- * point (rate, M, the 3D bake's scratch, the dose of a column). */
-static const double T_POINT = 3e-7, T_OUT = 1e-6, B_POINT = 32;
-
-/* Largest grid: two arrays of doubles (rate and M) at 1 GB together. */
-#define BLEACH_MAX_POINTS (1L << 26)
+ * per number written, measured on the development machine.  Memory: M
+ * is held (8 bytes a point), the rate is made plane by plane as it is
+ * written; per column the dose, a stack's intensities, and one plane of
+ * bake scratch per thread.  There is no fixed cap on the grid: the
+ * estimate against the machine's memory (budget.h) is the limit. */
+static const double T_POINT = 3e-7, T_OUT = 1e-6;
 
 struct options {
 	int ascii, solid, quiet, cutline;
@@ -180,27 +180,39 @@ static void fill_columns(void *ctx, size_t lo, size_t hi, int worker)
 	}
 }
 
-/* The development rate of every point, planes split among threads. */
+/* The development rate of one plane, made as the rate file is written
+ * (fmt_rate_write_planes: the rate array is never held whole), its
+ * columns split among threads; each point depends only on its own M. */
 struct rates {
 	const struct devrate *dv;
 	const double *M;
-	double *R;
 	size_t ncol;
 	double thick, dz;
+	int k;                          /* the plane being made */
+	double *plane;
 };
+
+#define PAR_MIN_RATES 4096
 
 static void fill_rates(void *ctx, size_t lo, size_t hi, int worker)
 {
+	(void)worker;
 	struct rates *r = ctx;
-	for (size_t k = lo; k < hi; k++) {
-		double depth = r->thick - (double)k * r->dz;
-		if (depth < 0)
-			depth = 0;
-		const double *mk = r->M + k * r->ncol;
-		double *rk = r->R + k * r->ncol;
-		for (size_t q = 0; q < r->ncol; q++)
-			rk[q] = devrate(r->dv, mk[q], depth);
-	}
+	double depth = r->thick - (double)r->k * r->dz;
+	if (depth < 0)
+		depth = 0;
+	const double *mk = r->M + (size_t)r->k * r->ncol;
+	for (size_t q = lo; q < hi; q++)
+		r->plane[q] = devrate(r->dv, mk[q], depth);
+}
+
+static void rate_plane(void *ctx, int array, int k, double *plane)
+{
+	(void)array;            /* only the rate (array 0) is made */
+	struct rates *r = ctx;
+	r->k = k;
+	r->plane = plane;
+	par_for(r->ncol, PAR_MIN_RATES, fill_rates, r);
 }
 
 /* Seconds per point and column step of the reaction-diffusion bake
@@ -291,19 +303,21 @@ int main(int argc, char **argv)
 		stack_check(st, &in, o.contour, o.input);
 
 	int nx = in.nx ? in.nx : c->nx, ny = in.nx ? in.ny : c->ny, nz = in.nz;
-	double npts = (double)nx * ny * nz;
-	if (npts > BLEACH_MAX_POINTS)
-		die("%s:%ld: grid of %.0f points is too large (at most %ld)", o.input,
-		    in.line_nz ? in.line_nz : 1L, npts, BLEACH_MAX_POINTS);
-	char what[64];
+	double npts = (double)nx * ny * nz, ncold = (double)nx * ny;
+	char what[64], where[FILENAME_MAX + 24];
 	snprintf(what, sizeof what, "%.3g rate points", npts);
-	budget_check(o.input, what, npts * (T_POINT + 2 * T_OUT), npts * B_POINT);
+	snprintf(where, sizeof where, "%s:%ld", o.input, in.line_nz ? in.line_nz : 1L);
+	budget_check(where, what, npts * (T_POINT + 2 * T_OUT),
+		     8 * npts + 8 * ncold * (1 + (st->is_stack ? st->n : 0) + par_threads()) +
+		     8 * (double)nz * nz);
 	/* the rate file and mxyz.solid.3D are committed together (util.h) */
 	aout_defer();
 	double bounds[6] = {c->xmin, c->xmax, c->ymin, c->ymax, -in.thick, 0};
 	struct ratefile *r = held.r = fmt_rate_new(nx, ny, nz, bounds);
 	double *M = fmt_rate_add_array(r, "M");
-	double *R = fmt_rate_values(r);
+	/* the rate is made plane by plane as it is written (rate_plane) */
+	free(r->arrays[0].v);
+	r->arrays[0].v = NULL;
 	size_t ncol = (size_t)nx * (size_t)ny;
 
 	/* column doses, mJ/cm2; negative intensities (interpolation ripple
@@ -399,12 +413,10 @@ int main(int argc, char **argv)
 	struct devrate dv;
 	devrate_init(&dv, &in);
 	static const char *mname[] = {"kim", "mack", "dill", "canegative", "enhanced", "notch"};
-	struct rates rj = {&dv, M, R, ncol, in.thick, dz};
-	par_for((size_t)nz, 1, fill_rates, &rj);
-	progress("development rate: %s model", mname[in.model]);
-
+	struct rates rj = {&dv, M, ncol, in.thick, dz, 0, NULL};
 	const char *out = o.output ? o.output : o.ascii ? "rval.3D" : "rval.3D.binary";
-	fmt_rate_write(out, r, o.ascii);
+	fmt_rate_write_planes(out, r, o.ascii, rate_plane, &rj);
+	progress("development rate: %s model", mname[in.model]);
 	progress("wrote %s (%dx%dx%d, arrays rate and M)", out, nx, ny, nz);
 	if (o.solid) {
 		long ntri = solid_write("mxyz.solid.3D", M, nx, ny, nz, bounds, o.level);

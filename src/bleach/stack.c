@@ -43,6 +43,22 @@ void stack_check(const struct image_stack *st, const struct bleach_input *in,
 	if (fabs(st->index - in->index) > STACK_MATCH * in->index)
 		die("%s: the image stack is for a resist of index %g, but %s gives "
 		    "index %g", stack_name, st->index, input_name, in->index);
+	/* the standing waves and the dose table are for bleach's wavelength:
+	 * an image of another is another exposure.  Stacks written before
+	 * the wavelength was recorded are taken as they are, with a warning. */
+	if (!(st->wavelength > 0)) {
+		warn("%s:1: the image stack does not record its wavelength (written by an "
+		     "older splat): taking it as %s's %g um", stack_name, input_name,
+		     in->wavelength);
+		return;
+	}
+	if (fabs(st->wavelength - in->wavelength) > STACK_MATCH * in->wavelength) {
+		double r = st->wavelength / in->wavelength;
+		die("%s:1: the image stack was computed at wavelength %g um, but %s gives "
+		    "wavelength %g um%s", stack_name, st->wavelength, input_name, in->wavelength,
+		    r > 500 && r < 2000 ? " (the stack's wavelength in nanometres?)" :
+		    r > 1 / 2000. && r < 1 / 500. ? " (the input's wavelength in nanometres?)" : "");
+	}
 }
 
 void stack_expose(const struct image_stack *st, const struct bleach_input *in,

@@ -212,6 +212,14 @@ int mesh_add_triangle(struct mesh *m, int a, int b, int c)
 	return t;
 }
 
+double mesh_dead_share(const struct mesh *m)
+{
+	double a = m->nnode ? 1 - (double)m->live_node / (double)m->nnode : 0;
+	double b = m->nseg ? 1 - (double)m->live_seg / (double)m->nseg : 0;
+	double c = m->ntri ? 1 - (double)m->live_tri / (double)m->ntri : 0;
+	return fmax(a, fmax(b, c));
+}
+
 double mesh_seg_length(const struct mesh *m, int s)
 {
 	const double *a = m->node[m->seg[s].n[0]].p, *b = m->node[m->seg[s].n[1]].p;

@@ -114,6 +114,12 @@ void mesh_kill_triangle(struct mesh *m, int t);
  * nothing is dead). */
 void mesh_compact(struct mesh *m);
 
+/* The largest share of dead slots among the node, segment and triangle
+ * arrays (0 after mesh_compact). */
+double mesh_dead_share(const struct mesh *m);
+/* etch compacts when the share passes this (and at print times). */
+#define MESH_DEAD_SHARE 0.125
+
 /* Length of segment s. */
 double mesh_seg_length(const struct mesh *m, int s);
 

@@ -107,15 +107,21 @@ void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 		 const struct etch_opts *o, struct etch_stats *st)
 {
 	double smax = o->smax * seg, smin = o->smin * seg;
-	long limit = (long)(OPS_PER_TRI * m->ntri) + 64, ops = 0;
+	long limit = (long)(OPS_PER_TRI * m->live_tri) + 64, ops = 0;
 	for (size_t t = 0; t < m->ntri && ops < limit; t++) {
 		const struct triangle *tr = &m->tri[t];
 		if (!tr->alive)
 			continue;
 		double len[3];
 		int lo = 0, hi = 0;
+		/* segment s[j] joins n[j] and n[j+1]: its length from the
+		 * triangle's own nodes, without the segment array's indirection
+		 * (the same value as mesh_seg_length: only signs differ) */
+		const double *q[3] = {m->node[tr->n[0]].p, m->node[tr->n[1]].p, m->node[tr->n[2]].p};
 		for (int j = 0; j < 3; j++) {
-			len[j] = mesh_seg_length(m, tr->s[j]);
+			const double *a = q[j], *b = q[j == 2 ? 0 : j + 1];
+			double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+			len[j] = sqrt(dx * dx + dy * dy + dz * dz);
 			if (len[j] > len[hi]) hi = j;
 			if (len[j] < len[lo]) lo = j;
 		}

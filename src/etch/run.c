@@ -234,7 +234,14 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 			if (fm && (i == n || (o->deloop_every > 0 &&
 					      (st->steps + 1) % o->deloop_every == 0)))
 				deloop_now(m, fm, f, i < n ? t + i * (span / n) : tp, st);
-			mesh_compact(m);
+			/* compaction rewrites the arrays from the first dead slot on:
+			 * done when the dead are many, and before a print and a
+			 * deloop pass; it keeps the live objects' order, which is all
+			 * the other passes see, so the result does not change */
+			if (i == n || (fm && (i == n - 1 || (o->deloop_every > 0 &&
+						(st->steps + 2) % o->deloop_every == 0))) ||
+			    mesh_dead_share(m) > MESH_DEAD_SHARE)
+				mesh_compact(m);
 			st->steps++;
 			note_size(m, st);
 			if ((long)m->live_tri > 2 * st->max_live_tri)

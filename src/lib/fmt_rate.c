@@ -468,21 +468,40 @@ struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want)
 	return r;
 }
 
-static void write_ascii(FILE *f, const struct ratefile *r)
+/* The values of plane k of array a: the array's own, or, for an array
+ * without values (fmt_rate_write_planes), made by gen into buf. */
+struct planes {
+	rate_plane_fn gen;
+	void *ctx;
+	double *buf;                /* one plane */
+};
+
+static const double *plane_of(const struct ratefile *r, const struct planes *p, int a, int k)
+{
+	size_t n = (size_t)r->nx * (size_t)r->ny;
+	if (r->arrays[a].v)
+		return r->arrays[a].v + (size_t)k * n;
+	p->gen(p->ctx, a, k, p->buf);
+	return p->buf;
+}
+
+static void write_ascii(FILE *f, const struct ratefile *r, const struct planes *p)
 {
 	fprintf(f, "%s %d\n%d %d %d %d\n", RATE_MAGIC_ASCII, RATE_VERSION,
 		r->nx, r->ny, r->nz, r->narrays);
 	double b[6] = {r->xmin, r->xmax, r->ymin, r->ymax, r->zmin, r->zmax};
 	num_print_row(f, b, 6);
-	size_t np = npoints(r);
 	for (int a = 0; a < r->narrays; a++) {
 		fprintf(f, "%s\n", r->arrays[a].name);
-		for (size_t i = 0; i < np; i += (size_t)r->nx)
-			num_print_row(f, r->arrays[a].v + i, r->nx);
+		for (int k = 0; k < r->nz; k++) {
+			const double *v = plane_of(r, p, a, k);
+			for (int j = 0; j < r->ny; j++)
+				num_print_row(f, v + (size_t)j * (size_t)r->nx, r->nx);
+		}
 	}
 }
 
-static void write_binary(FILE *f, const struct ratefile *r)
+static void write_binary(FILE *f, const struct ratefile *r, const struct planes *p)
 {
 	unsigned char hdr[HDR_FIXED + 8 * RATE_MAX_ARRAYS];
 	memset(hdr, 0, sizeof hdr);
@@ -501,16 +520,19 @@ static void write_binary(FILE *f, const struct ratefile *r)
 	unsigned long crc = fmt_crc32(0, hdr, hlen);
 	fwrite(hdr, 1, hlen, f);
 	unsigned char chunk[8 * 1024];
-	size_t np = npoints(r);
+	size_t np = (size_t)r->nx * (size_t)r->ny;      /* a plane */
 	for (int a = 0; a < r->narrays; a++) {
-		size_t used = 0;
-		for (size_t i = 0; i < np; i++) {
-			put_f64(chunk + used, r->arrays[a].v[i]);
-			used += 8;
-			if (used == sizeof chunk || i + 1 == np) {
-				crc = fmt_crc32(crc, chunk, used);
-				fwrite(chunk, 1, used, f);
-				used = 0;
+		for (int k = 0; k < r->nz; k++) {
+			const double *v = plane_of(r, p, a, k);
+			size_t used = 0;
+			for (size_t i = 0; i < np; i++) {
+				put_f64(chunk + used, v[i]);
+				used += 8;
+				if (used == sizeof chunk || i + 1 == np) {
+					crc = fmt_crc32(crc, chunk, used);
+					fwrite(chunk, 1, used, f);
+					used = 0;
+				}
 			}
 		}
 	}
@@ -519,15 +541,31 @@ static void write_binary(FILE *f, const struct ratefile *r)
 	fwrite(tail, 1, 4, f);
 }
 
-void fmt_rate_write(const char *path, const struct ratefile *r, int ascii)
+void fmt_rate_write_planes(const char *path, const struct ratefile *r, int ascii,
+			   rate_plane_fn gen, void *ctx)
 {
 	const char *err = check_header(r);
 	if (err)
 		die("%s: internal error: %s", path, err);
+	struct planes p = {gen, ctx, NULL};
+	for (int a = 0; a < r->narrays; a++)
+		if (!r->arrays[a].v) {
+			if (!gen)
+				die("%s: internal error: array %s has no values", path,
+				    r->arrays[a].name);
+			p.buf = xreallocarray(NULL, (size_t)r->nx * (size_t)r->ny, sizeof *p.buf);
+			break;
+		}
 	struct aout *a = aout_open(path);
 	if (ascii)
-		write_ascii(a->f, r);
+		write_ascii(a->f, r, &p);
 	else
-		write_binary(a->f, r);
+		write_binary(a->f, r, &p);
+	free(p.buf);
 	aout_commit(a);
+}
+
+void fmt_rate_write(const char *path, const struct ratefile *r, int ascii)
+{
+	fmt_rate_write_planes(path, r, ascii, NULL, NULL);
 }

@@ -66,6 +66,14 @@ struct ratefile *fmt_rate_read(const char *path);
  * checked.  Otherwise the same errors as fmt_rate_read. */
 struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want);
 void fmt_rate_write(const char *path, const struct ratefile *r, int ascii);
+/* The same, for a grid too large to hold every array: an array whose
+ * values are NULL is made plane by plane (k = 0 .. nz-1, nx*ny values,
+ * x fastest) by gen(ctx, array, k, plane) as it is written, so memory is
+ * the arrays held plus one plane.  The file is byte-identical to
+ * fmt_rate_write's of the same values. */
+typedef void (*rate_plane_fn)(void *ctx, int array, int k, double *plane);
+void fmt_rate_write_planes(const char *path, const struct ratefile *r, int ascii,
+			   rate_plane_fn gen, void *ctx);
 void fmt_rate_free(struct ratefile *r);
 
 /* CRC-32 (IEEE 802.3, as in zlib), exposed for tests. */

@@ -17,6 +17,8 @@
 
 /* Bounds of the header, those of splat(5)'s resist statement. */
 static const double STACK_MAX_THICK = 1e3, STACK_MAX_INDEX = 100;
+/* The wavelength's bound, that of splat(5)'s wavelength statement, um. */
+static const double STACK_MAX_WAVELENGTH = 1e3;
 /* The last depth must equal the thickness to this fraction of it: a
  * stack written by hand with rounded depths still reads. */
 static const double STACK_DEPTH_SLACK = 1e-9;
@@ -52,16 +54,21 @@ void fmt_stack_free(struct image_stack *s)
 }
 
 /* "stack" is read; the pairs planes N, thickness T, index n follow in
- * any order, each once. */
-static void header(struct lex *lx, struct image_stack *s)
+ * any order, each once, and optionally wavelength L (stacks written
+ * before it was recorded have none).  Returns the token after them. */
+static const char *header(struct lex *lx, struct image_stack *s)
 {
 	int got = 0;
-	for (int i = 0; i < 3; i++) {
+	for (;;) {
 		const char *k = lex_token(lx);
 		int bit = !k ? 0 : strcasecmp(k, "planes") == 0 ? 1 :
-			  strcasecmp(k, "thickness") == 0 ? 2 : strcasecmp(k, "index") == 0 ? 4 : 0;
+			  strcasecmp(k, "thickness") == 0 ? 2 : strcasecmp(k, "index") == 0 ? 4 :
+			  strcasecmp(k, "wavelength") == 0 ? 8 : 0;
+		if ((got & 7) == 7 && !bit)
+			return k;
 		if (!bit || (got & bit))
-			lex_error(lx, "stack: expected \"stack planes N thickness T index n\"");
+			lex_error(lx, "stack: expected \"stack planes N thickness T index n "
+				  "[wavelength L]\"");
 		got |= bit;
 		if (bit == 1) {
 			s->n = (int)lex_count(lx, "the number of planes", 2, STACK_MAX_PLANES);
@@ -70,11 +77,16 @@ static void header(struct lex *lx, struct image_stack *s)
 			if (!(s->thick > 0 && s->thick <= STACK_MAX_THICK))
 				lex_error(lx, "stack: thickness must be in (0, %g] um, found %g",
 					  STACK_MAX_THICK, s->thick);
-		} else {
+		} else if (bit == 4) {
 			s->index = lex_number(lx, "the resist index");
 			if (!(s->index >= 1 && s->index <= STACK_MAX_INDEX))
 				lex_error(lx, "stack: index must be in [1, %g], found %g",
 					  STACK_MAX_INDEX, s->index);
+		} else {
+			s->wavelength = lex_number(lx, "the wavelength");
+			if (!(s->wavelength > 0 && s->wavelength <= STACK_MAX_WAVELENGTH))
+				lex_error(lx, "stack: wavelength must be in (0, %g] um, found %g",
+					  STACK_MAX_WAVELENGTH, s->wavelength);
 		}
 	}
 }
@@ -112,12 +124,11 @@ struct image_stack *fmt_stack_read(const char *path)
 		return s;
 	}
 	s->is_stack = 1;
-	header(lx, s);
+	t = header(lx, s);
 	s->depth = xcalloc((size_t)s->n, sizeof *s->depth);
 	s->plane = xcalloc((size_t)s->n, sizeof *s->plane);
 	int n = s->n;
 	s->n = 0;               /* planes read so far */
-	t = lex_token(lx);
 	for (int k = 0; k < n; k++) {
 		if (!t || strcasecmp(t, "depth") != 0) {
 			if (!t)
@@ -172,6 +183,10 @@ void fmt_stack_write(const char *path, const struct image_stack *s)
 	num_print(a->f, s->thick);
 	fputs(" index ", a->f);
 	num_print(a->f, s->index);
+	if (s->wavelength > 0) {
+		fputs(" wavelength ", a->f);
+		num_print(a->f, s->wavelength);
+	}
 	fputc('\n', a->f);
 	for (int k = 0; k < s->n; k++) {
 		fputs("depth ", a->f);

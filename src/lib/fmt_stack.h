@@ -4,7 +4,7 @@
  * bleach and contour read.  Text, one header line, then the planes top
  * first, each a depth line and a whole contour-file (fmt_contour.h):
  *
- *   stack planes N thickness T index n
+ *   stack planes N thickness T index n wavelength L
  *   depth 0
  *   xmin xmax ymin ymax
  *   nxpts nypts
@@ -29,13 +29,15 @@ struct image_stack {
 	int n;                  /* planes, >= 2 in a stack file */
 	double thick;           /* resist thickness, micrometres (0: plain file) */
 	double index;           /* resist real index (0: plain file) */
+	double wavelength;      /* of the exposure, um (0: not recorded, as in
+				 * stacks written before it was) */
 	double *depth;          /* n depths below the resist top, um: 0 first,
 				 * increasing, thick last */
 	struct contour **plane; /* n images on one window and grid */
 };
 
 /* A stack of n planes at depths k thick / (n - 1), each a zero image on
- * the window and grid of like. */
+ * the window and grid of like; wavelength 0 (the writer sets it). */
 struct image_stack *fmt_stack_new(int n, double thick, double index,
 				  const struct contour *like);
 /* Reads an image stack, or a plain contour-file as a one-plane stack with

@@ -225,6 +225,7 @@ int main(int argc, char **argv)
 		/* the image stack (stack.5): plane k at depth k T/(N-1) */
 		struct image_stack *st = fmt_stack_new(in->planes, in->resist_thick,
 						       in->resist_index, c);
+		st->wavelength = in->wavelength;        /* bleach checks it */
 		for (int k = 0; k < st->n; k++) {
 			struct spectrum v = spectrum_plane(sp, k);
 			grid(&v, method, m, in->nx, in->ny, st->plane[k]->z);

@@ -43,6 +43,14 @@ if [ -x /usr/bin/time ]; then
 	run "contact 51x51x300, bake in z" "$img" "$TOP/examples/contact/resist.in"
 	run "contact 51x51x300, no bake" "$img" "$TOP/examples/contact/resist-nobake.in"
 	run "contact 51x51x300, bake3d, -solid" -solid "$img" resist3d.in
+	# issue 14's legal large grid: 2^26 points (the contact resampled to
+	# 2048 x 2048, nz 16) with a 3D bake; 228 s and 1.1 GB before the
+	# recursive bake and the streamed rate array, aim 10 s and 1 GB
+	sed 's/^grid .*/grid nx 2048 ny 2048 nz 16/' resist3d.in >big.in
+	/usr/bin/time -f "%e %U %S %M" -o t.txt "$bin" -q -o big.bin "$img" big.in ||
+		echo "bleach: the 2^26-point grid failed"
+	awk '{ printf "bleach: %-44s %6.2f s %7.1f MB (%.2f s CPU)\n", "2048x2048x16 (2^26 points), bake3d", $1, $4 / 1024, $2 + $3 }' t.txt
+	rm -f big.bin
 else
 	echo "bleach: /usr/bin/time missing, timing with the shell only"
 	time "$bin" -q "$img" resist3d.in

@@ -25,7 +25,7 @@ IN
 { cat base.in; echo "resist index 1.6 planes 3 thickness 0.1"
   echo "cutline -1 0 1 0 11 cut.2D"; } >st.in
 splat -q -o st.cont st.in || fail "splat with a resist statement"
-sed -n 1p st.cont | grep -qx 'stack planes 3 thickness 0.1 index 1.6' ||
+sed -n 1p st.cont | grep -qx 'stack planes 3 thickness 0.1 index 1.6 wavelength 0.436' ||
 	fail "header: $(sed -n 1p st.cont)"
 [ "$(grep -c '^depth ' st.cont)" -eq 3 ] || fail "expected 3 depth lines"
 grep '^depth ' st.cont | tr '\n' ' ' | grep -qx 'depth 0 depth 0.05 depth 0.1 ' ||

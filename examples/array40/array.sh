@@ -1,0 +1,14 @@
+#!/bin/sh
+# Issue 15's large-mask case: a SIZE x SIZE um (default 40) array of 0.5 um
+# contacts on a 1 um pitch through sample3D (splat, bleach, etch).
+# Usage: sh array.sh [SIZE] [sample3D options]; outputs go to $OUT/SIZE
+# (default: out/SIZE here).  Minutes and gigabytes: see README.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+size=40
+case ${1:-} in [0-9]*) size=$1; shift ;; esac
+out=${OUT:-$here/out}/$size
+mkdir -p "$out"
+cd "$out"
+sh "$here/make-mask.sh" "$size" >mask.in
+sample3D -if mask.in -bf "$here/resist.in" -et 60 -last -h "$@"
