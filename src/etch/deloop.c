@@ -165,7 +165,10 @@ struct grid {
 	long n[3];              /* cells per axis (the mesh's box over h) */
 	size_t mask;            /* slots - 1 */
 	long long *key;         /* the cell's index, or -1: empty slot */
-	size_t *start;
+	size_t *rank;           /* the slot's cell in the order of the indices */
+	size_t nocc;            /* occupied cells */
+	size_t *start;          /* per rank: cell r's triangles are
+				 * item[start[r] .. start[r + 1]) */
 	struct gitem *item;
 };
 
@@ -276,89 +279,89 @@ static void grid_build(struct grid *g, const struct mesh *m)
 		}
 		h *= 2;
 	}
-	/* the table: the occupied cells at most half its slots, grown
-	 * (doubled, the counts rehashed) as the first pass finds them */
-	size_t slots = 1024, nocc = 0;
-	while ((double)slots < (double)ntri / 2)
+	/* the entries (cell index, triangle) in the triangles' order, sorted
+	 * by cell index (LSD radix, 16 bits a pass: stable, so a cell's
+	 * triangles stay in increasing order), then the occupied cells
+	 * hashed once each */
+	size_t ne = (size_t)grid_entries(g, m), e = 0;
+	struct ekey {
+		unsigned long long key;
+		size_t i;
+	} *ek = xreallocarray(NULL, ne + 1, sizeof *ek), *tmp = xreallocarray(NULL, ne + 1, sizeof *tmp);
+	struct gitem *raw = xreallocarray(NULL, ne + 1, sizeof *raw);
+	for (size_t t = 0; t < m->ntri; t++) {
+		if (!m->tri[t].alive)
+			continue;
+		double blo[3], bhi[3];
+		long c0[3], c1[3];
+		tri_box(m, (int)t, blo, bhi);
+		struct gitem it = {{0}, {0}, (int)t};
+		for (int d = 0; d < 3; d++) {
+			it.lo[d] = (float)blo[d];
+			if ((double)it.lo[d] > blo[d])
+				it.lo[d] = nextafterf(it.lo[d], -INFINITY);
+			it.hi[d] = (float)bhi[d];
+			if ((double)it.hi[d] < bhi[d])
+				it.hi[d] = nextafterf(it.hi[d], INFINITY);
+		}
+		cell_range(g, blo, bhi, c0, c1);
+		for (long k = c0[2]; k <= c1[2]; k++)
+			for (long j = c0[1]; j <= c1[1]; j++)
+				for (long i = c0[0]; i <= c1[0]; i++) {
+					ek[e].key = (unsigned long long)cell_key(g, i, j, k);
+					ek[e].i = e;
+					raw[e++] = it;
+				}
+	}
+	unsigned long long kmax = (unsigned long long)cell_key(g, g->n[0] - 1, g->n[1] - 1, g->n[2] - 1);
+	size_t *bucket = xreallocarray(NULL, 65536 + 1, sizeof *bucket);
+	for (int shift = 0; shift < 64 && (kmax >> shift) > 0; shift += 16) {
+		memset(bucket, 0, (65536 + 1) * sizeof *bucket);
+		for (size_t x = 0; x < ne; x++)
+			bucket[((ek[x].key >> shift) & 0xffff) + 1]++;
+		for (size_t q = 0; q < 65536; q++)
+			bucket[q + 1] += bucket[q];
+		for (size_t x = 0; x < ne; x++)
+			tmp[bucket[(ek[x].key >> shift) & 0xffff]++] = ek[x];
+		struct ekey *sw = ek;
+		ek = tmp;
+		tmp = sw;
+	}
+	free(bucket);
+	free(tmp);
+	g->item = xreallocarray(NULL, ne + 1, sizeof *g->item);
+	size_t nocc = 0;
+	for (size_t x = 0; x < ne; x++) {
+		g->item[x] = raw[ek[x].i];
+		nocc += x == 0 || ek[x].key != ek[x - 1].key;
+	}
+	free(raw);
+	size_t slots = 1024;
+	while (slots < 2 * nocc)
 		slots *= 2;
 	g->mask = slots - 1;
+	g->nocc = nocc;
 	g->key = xreallocarray(NULL, slots, sizeof *g->key);
-	size_t *cnt = xcalloc(slots, sizeof *cnt);
+	g->rank = xreallocarray(NULL, slots, sizeof *g->rank);
+	g->start = xreallocarray(NULL, nocc + 1, sizeof *g->start);
 	for (size_t q = 0; q < slots; q++)
 		g->key[q] = -1;
-	/* two passes: count per cell, then fill */
-	for (int pass = 0; pass < 2; pass++) {
-		for (size_t t = 0; t < m->ntri; t++) {
-			if (!m->tri[t].alive)
-				continue;
-			double blo[3], bhi[3];
-			long c0[3], c1[3];
-			tri_box(m, (int)t, blo, bhi);
-			struct gitem it = {{0}, {0}, (int)t};
-			if (pass == 1)
-				for (int d = 0; d < 3; d++) {
-					it.lo[d] = (float)blo[d];
-					if ((double)it.lo[d] > blo[d])
-						it.lo[d] = nextafterf(it.lo[d], -INFINITY);
-					it.hi[d] = (float)bhi[d];
-					if ((double)it.hi[d] < bhi[d])
-						it.hi[d] = nextafterf(it.hi[d], INFINITY);
-				}
-			cell_range(g, blo, bhi, c0, c1);
-			for (long k = c0[2]; k <= c1[2]; k++)
-				for (long j = c0[1]; j <= c1[1]; j++)
-					for (long i = c0[0]; i <= c1[0]; i++) {
-						long long key = cell_key(g, i, j, k);
-						size_t q = cell_slot(g, key);
-						if (pass == 1) {
-							g->item[g->start[q]++] = it;
-							continue;
-						}
-						if (g->key[q] == -1) {
-							g->key[q] = key;
-							nocc++;
-						}
-						cnt[q]++;
-						if (2 * nocc <= slots)
-							continue;
-						/* rehash into twice the slots */
-						size_t old = slots;
-						long long *okey = g->key;
-						size_t *ocnt = cnt;
-						slots *= 2;
-						g->mask = slots - 1;
-						g->key = xreallocarray(NULL, slots, sizeof *g->key);
-						cnt = xcalloc(slots, sizeof *cnt);
-						for (size_t r = 0; r < slots; r++)
-							g->key[r] = -1;
-						for (size_t r = 0; r < old; r++)
-							if (okey[r] != -1) {
-								size_t x = cell_slot(g, okey[r]);
-								g->key[x] = okey[r];
-								cnt[x] = ocnt[r];
-							}
-						free(okey);
-						free(ocnt);
-					}
+	size_t r = 0;
+	for (size_t x = 0; x < ne; x++)
+		if (x == 0 || ek[x].key != ek[x - 1].key) {
+			size_t q = cell_slot(g, (long long)ek[x].key);
+			g->key[q] = (long long)ek[x].key;
+			g->rank[q] = r;
+			g->start[r++] = x;
 		}
-		if (pass == 0) {
-			g->start = xreallocarray(NULL, slots + 1, sizeof *g->start);
-			g->start[0] = 0;
-			for (size_t q = 0; q < slots; q++)
-				g->start[q + 1] = g->start[q] + cnt[q];
-			g->item = xreallocarray(NULL, g->start[slots] + 1, sizeof *g->item);
-		} else {
-			/* the fill advanced each start to the next slot's */
-			memmove(g->start + 1, g->start, slots * sizeof *g->start);
-			g->start[0] = 0;
-		}
-	}
-	free(cnt);
+	g->start[nocc] = ne;
+	free(ek);
 }
 
 static void grid_free(struct grid *g)
 {
 	free(g->key);
+	free(g->rank);
 	free(g->start);
 	free(g->item);
 }
@@ -369,16 +372,6 @@ static int cmp_pierce(const void *a, const void *b)
 	if (p->s != q->s)
 		return p->s < q->s ? -1 : 1;
 	return (p->t > q->t) - (p->t < q->t);
-}
-
-/* qsort has no context argument: the keys the slots are sorted by (one
- * thread, the programs' main, sorts at a time) */
-static const long long *sort_key;
-
-static int cmp_slot_key(const void *a, const void *b)
-{
-	long long x = sort_key[*(const size_t *)a], y = sort_key[*(const size_t *)b];
-	return (x > y) - (x < y);
 }
 
 /* the search, shared by the threads: each takes a range of the segments
@@ -420,7 +413,8 @@ static void pierce_range(void *ctx, size_t lo0, size_t hi0, int w)
 					size_t c = cell_slot(g, cell_key(g, i, jj, k));
 					if (g->key[c] == -1)
 						continue;
-					for (size_t e = g->start[c]; e < g->start[c + 1]; e++) {
+					size_t r = g->rank[c];
+					for (size_t e = g->start[r]; e < g->start[r + 1]; e++) {
 						/* boxes apart: no common point (cheaper than
 						 * the orientations) */
 						const struct gitem *b = &g->item[e];
@@ -464,19 +458,7 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 	 * cell of their first node): consecutive queries then read the same
 	 * triangles, which stay in cache, where the mesh's own order, after
 	 * many splits and merges, is scattered over the surface */
-	size_t nslot = g.mask + 1, nocc = 0;
-	size_t *occ = xreallocarray(NULL, nslot, sizeof *occ);
-	for (size_t q = 0; q < nslot; q++)
-		if (g.key[q] != -1)
-			occ[nocc++] = q;
-	sort_key = g.key;
-	qsort(occ, nocc, sizeof *occ, cmp_slot_key);
-	size_t *rank = xreallocarray(NULL, nslot, sizeof *rank);
-	for (size_t q = 0; q < nslot; q++)
-		rank[q] = nocc;         /* an empty cell: last */
-	for (size_t r = 0; r < nocc; r++)
-		rank[occ[r]] = r;
-	free(occ);
+	size_t nocc = g.nocc;
 	size_t *at = xcalloc(nocc + 2, sizeof *at);
 	int *order = xreallocarray(NULL, m->nseg + 1, sizeof *order);
 	size_t *cellof = xreallocarray(NULL, m->nseg + 1, sizeof *cellof);
@@ -486,10 +468,10 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 		const double *p = m->node[m->seg[s].n[0]].p;
 		long c[3], c1[3];
 		cell_range(&g, p, p, c, c1);
-		cellof[s] = rank[cell_slot(&g, cell_key(&g, c[0], c[1], c[2]))];
+		size_t q = cell_slot(&g, cell_key(&g, c[0], c[1], c[2]));
+		cellof[s] = g.key[q] == -1 ? nocc : g.rank[q];     /* an empty cell: last */
 		at[cellof[s] + 1]++;
 	}
-	free(rank);
 	for (size_t c = 0; c <= nocc; c++)
 		at[c + 1] += at[c];
 	size_t nlive = at[nocc + 1];
