@@ -220,20 +220,78 @@ static void tri_box(const struct mesh *m, int t, double lo[3], double hi[3])
 	}
 }
 
-/* the cell entries of the alive triangles at cell size h */
-static double grid_entries(const struct grid *g, const struct mesh *m)
+/* the grid's construction, by the threads over ranges of triangles */
+struct grid_job {
+	struct grid *g;
+	const struct mesh *m;
+	double *cnt;            /* per triangle: its cell entries */
+	const size_t *off;      /* per triangle: its first entry */
+	struct ekey {
+		unsigned long long key;
+		size_t i;
+	} *ek;
+	struct gitem *raw;
+};
+
+static void count_range(void *ctx, size_t lo, size_t hi, int w)
 {
-	double total = 0;
-	for (size_t t = 0; t < m->ntri; t++) {
-		if (!m->tri[t].alive)
+	(void)w;
+	struct grid_job *j = ctx;
+	for (size_t t = lo; t < hi; t++) {
+		j->cnt[t] = 0;
+		if (!j->m->tri[t].alive)
 			continue;
 		double blo[3], bhi[3];
 		long c0[3], c1[3];
-		tri_box(m, (int)t, blo, bhi);
-		cell_range(g, blo, bhi, c0, c1);
-		total += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
-			 (double)(c1[2] - c0[2] + 1);
+		tri_box(j->m, (int)t, blo, bhi);
+		cell_range(j->g, blo, bhi, c0, c1);
+		j->cnt[t] = (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+			    (double)(c1[2] - c0[2] + 1);
 	}
+}
+
+static void fill_range(void *ctx, size_t lo, size_t hi, int w)
+{
+	(void)w;
+	struct grid_job *j = ctx;
+	for (size_t t = lo; t < hi; t++) {
+		if (!j->m->tri[t].alive)
+			continue;
+		double blo[3], bhi[3];
+		long c0[3], c1[3];
+		tri_box(j->m, (int)t, blo, bhi);
+		struct gitem it = {{0}, {0}, (int)t};
+		for (int d = 0; d < 3; d++) {
+			it.lo[d] = (float)blo[d];
+			if ((double)it.lo[d] > blo[d])
+				it.lo[d] = nextafterf(it.lo[d], -INFINITY);
+			it.hi[d] = (float)bhi[d];
+			if ((double)it.hi[d] < bhi[d])
+				it.hi[d] = nextafterf(it.hi[d], INFINITY);
+		}
+		cell_range(j->g, blo, bhi, c0, c1);
+		size_t e = j->off[t];
+		for (long k = c0[2]; k <= c1[2]; k++)
+			for (long jj = c0[1]; jj <= c1[1]; jj++)
+				for (long i = c0[0]; i <= c1[0]; i++) {
+					j->ek[e].key = (unsigned long long)cell_key(j->g, i, jj, k);
+					j->ek[e].i = e;
+					j->raw[e++] = it;
+				}
+	}
+}
+
+/* Triangles per thread at least, building the grid. */
+#define GRID_MIN_TRIS 4096
+
+/* the cell entries of the alive triangles at the grid's cell size, per
+ * triangle in j->cnt, and their total */
+static double grid_entries(struct grid_job *j)
+{
+	par_for(j->m->ntri, GRID_MIN_TRIS, count_range, j);
+	double total = 0;
+	for (size_t t = 0; t < j->m->ntri; t++)
+		total += j->cnt[t];
 	return total;
 }
 
@@ -264,6 +322,8 @@ static void grid_build(struct grid *g, const struct mesh *m)
 	}
 	if (!(h > 0))
 		h = 1;
+	struct grid_job job = {g, m, xreallocarray(NULL, m->ntri + 1, sizeof *job.cnt), NULL, NULL,
+			       NULL};
 	/* cell indices stay far inside a long long, and the triangles'
 	 * boxes within GRID_ENTRIES_PER_TRI cells each on average */
 	for (;;) {
@@ -274,7 +334,7 @@ static void grid_build(struct grid *g, const struct mesh *m)
 			g->h = h;
 			for (int d = 0; d < 3; d++)
 				g->n[d] = (long)floor(ext[d] / h) + 1;
-			if (grid_entries(g, m) <= GRID_ENTRIES_PER_TRI * (double)ntri + 64)
+			if (grid_entries(&job) <= GRID_ENTRIES_PER_TRI * (double)ntri + 64)
 				break;
 		}
 		h *= 2;
@@ -283,36 +343,19 @@ static void grid_build(struct grid *g, const struct mesh *m)
 	 * by cell index (LSD radix, 16 bits a pass: stable, so a cell's
 	 * triangles stay in increasing order), then the occupied cells
 	 * hashed once each */
-	size_t ne = (size_t)grid_entries(g, m), e = 0;
-	struct ekey {
-		unsigned long long key;
-		size_t i;
-	} *ek = xreallocarray(NULL, ne + 1, sizeof *ek), *tmp = xreallocarray(NULL, ne + 1, sizeof *tmp);
-	struct gitem *raw = xreallocarray(NULL, ne + 1, sizeof *raw);
+	size_t *off = xreallocarray(NULL, m->ntri + 1, sizeof *off), ne = 0;
 	for (size_t t = 0; t < m->ntri; t++) {
-		if (!m->tri[t].alive)
-			continue;
-		double blo[3], bhi[3];
-		long c0[3], c1[3];
-		tri_box(m, (int)t, blo, bhi);
-		struct gitem it = {{0}, {0}, (int)t};
-		for (int d = 0; d < 3; d++) {
-			it.lo[d] = (float)blo[d];
-			if ((double)it.lo[d] > blo[d])
-				it.lo[d] = nextafterf(it.lo[d], -INFINITY);
-			it.hi[d] = (float)bhi[d];
-			if ((double)it.hi[d] < bhi[d])
-				it.hi[d] = nextafterf(it.hi[d], INFINITY);
-		}
-		cell_range(g, blo, bhi, c0, c1);
-		for (long k = c0[2]; k <= c1[2]; k++)
-			for (long j = c0[1]; j <= c1[1]; j++)
-				for (long i = c0[0]; i <= c1[0]; i++) {
-					ek[e].key = (unsigned long long)cell_key(g, i, j, k);
-					ek[e].i = e;
-					raw[e++] = it;
-				}
+		off[t] = ne;
+		ne += (size_t)job.cnt[t];
 	}
+	free(job.cnt);
+	struct ekey *ek = xreallocarray(NULL, ne + 1, sizeof *ek), *tmp = xreallocarray(NULL, ne + 1, sizeof *tmp);
+	struct gitem *raw = xreallocarray(NULL, ne + 1, sizeof *raw);
+	job.off = off;
+	job.ek = ek;
+	job.raw = raw;
+	par_for(m->ntri, GRID_MIN_TRIS, fill_range, &job);
+	free(off);
 	unsigned long long kmax = (unsigned long long)cell_key(g, g->n[0] - 1, g->n[1] - 1, g->n[2] - 1);
 	size_t *bucket = xreallocarray(NULL, 65536 + 1, sizeof *bucket);
 	for (int shift = 0; shift < 64 && (kmax >> shift) > 0; shift += 16) {
