@@ -9,8 +9,8 @@
 #     time (wall and CPU, best of 3);
 #   - deloop at about 1e5 and 1e6 triangles (tests/bench/deloop.sh's two
 #     spheres, S_ideal 0.032 and 0.01 um): the time etch reports for the
-#     deloop passes (wall, classifier included), one run each, at 1 thread
-#     and at the default count;
+#     deloop passes (CPU seconds, clock(): every thread's, classifier
+#     included), one run each, at 1 thread and at the default count;
 #   - the fast-marching engine on a 20 x 20 um contact array (1 um pitch,
 #     0.5 um contacts, i-line NA 0.6 sigma 0.5, 0.05 um grid, nz 300,
 #     bake, 60 s): the rate file is made once (splat and bleach, not
@@ -95,7 +95,7 @@ mkdir -p "$tmp/d"
 "$mkrate" -o "$tmp/d/two.bin" 31 41 31 -1.5 1.5 -1.5 2.5 -1.5 1.5 1 >/dev/null || exit 1
 segs="0.032 0.01"
 [ "${BENCH_QUICK:-0}" = 1 ] && segs=0.032
-# dl BIN THREADS|old SEG: the deloop seconds etch reports (wall), summed
+# dl BIN THREADS|old SEG: the deloop CPU seconds etch reports, summed
 # over its runs, in dt; the final triangles in ntri
 dl() {
 	th="-threads $2"
@@ -117,10 +117,10 @@ for seg in $segs; do
 		o1=$dt
 		same=same
 		cmp -s "$tmp/d/xold.plot" "$tmp/d/new.plot" || same=DIFFERENT
-		printf 'etchfast: deloop %8s triangles  1 thread %6.2f -> %6.2f s (%s), %d threads %6.2f s; output %s\n' \
+		printf 'etchfast: deloop %8s triangles  cpu, 1 thread %6.2f -> %6.2f s (%s), %d threads %6.2f s; output %s\n' \
 			"$ntri" "$o1" "$n1" "$(ratio "$o1" "$n1")" "$(nproc)" "$n2" "$same"
 	else
-		printf 'etchfast: deloop %8s triangles  1 thread %6.2f s, %d threads %6.2f s\n' "$ntri" "$n1" "$(nproc)" "$n2"
+		printf 'etchfast: deloop %8s triangles  cpu, 1 thread %6.2f s, %d threads %6.2f s\n' "$ntri" "$n1" "$(nproc)" "$n2"
 	fi
 done
 
