@@ -1,6 +1,6 @@
 /*
  * deloop.c - mesh delooping (thesis 7.5.3, 8.4.3): find the
- * self-intersections through a uniform grid, split the mesh into patches
+ * self-intersections through a hashed grid, split the mesh into patches
  * along the intersection curves, classify each patch by the arrival time
  * of the fast-marching engine, cut the crossing segments on the curves and
  * delete the loop patches.  See deloop.h for the design.
@@ -17,6 +17,7 @@
 
 #include "etch.h"
 #include "fmm.h"
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
@@ -27,9 +28,6 @@
  * or two cells per axis, and a segment's box as many, so each query looks
  * at a handful of triangles. */
 #define GRID_CELL_SEGS 1.5
-/* At most this many cells per triangle: a mesh spread thinly over a big
- * box (a flat front) would otherwise get mostly empty cells. */
-#define GRID_CELLS_PER_TRI 4.0
 /* A patch is a loop when the median of its nodes' signed distances to the
  * fast-marching front is below minus a margin: DELOOP_TOL_SPREAD times the
  * median |distance| over all the mesh's nodes (most of them are on the
@@ -144,23 +142,69 @@ static int pierce(const double *p, const double *q, const double *a, const doubl
 	return 1;
 }
 
-/* A uniform grid of the alive triangles, in compressed rows: the
- * triangles overlapping cell c are item[start[c] .. start[c + 1]). */
-struct grid {
-	double lo[3], h;
-	int n[3];
-	size_t *start;
-	int *item;
+/* A hashed grid of the alive triangles: cells about GRID_CELL_SEGS mean
+ * segments across, fixed by the mesh alone, only the occupied ones
+ * stored (a surface fills a vanishing part of its box, so a dense array
+ * of cells this small would not fit, and a coarser one - as before issue
+ * 15 - puts ever more triangles in a cell as the mesh grows: n^1.5).
+ * Cell keys hash into an open-addressed table of 2^k slots; the
+ * triangles of slot q's cell are item[start[q] .. start[q + 1]).  Which
+ * cells a triangle is listed in does not change the pierces found (every
+ * pair with overlapping boxes meets in some cell, and the list is sorted
+ * at the end), only the time. */
+/* A triangle in a cell: its box, rounded outwards to floats, read with
+ * it so that most of the triangles a query meets are rejected without
+ * touching the mesh. */
+struct gitem {
+	float lo[3], hi[3];
+	int t;
 };
 
+struct grid {
+	double lo[3], h;
+	long n[3];              /* cells per axis (the mesh's box over h) */
+	size_t mask;            /* slots - 1 */
+	long long *key;         /* the cell's index, or -1: empty slot */
+	size_t *rank;           /* the slot's cell in the order of the indices */
+	size_t nocc;            /* occupied cells */
+	size_t *start;          /* per rank: cell r's triangles are
+				 * item[start[r] .. start[r + 1]) */
+	struct gitem *item;
+};
+
+/* At most this many cell entries per triangle: the grid is coarsened
+ * (h doubled) until the triangles' boxes fit (a mesh of a few huge
+ * triangles among small ones). */
+#define GRID_ENTRIES_PER_TRI 64.0
+
 static void cell_range(const struct grid *g, const double *lo, const double *hi,
-		       int c0[3], int c1[3])
+		       long c0[3], long c1[3])
 {
 	for (int d = 0; d < 3; d++) {
 		double a = floor((lo[d] - g->lo[d]) / g->h), b = floor((hi[d] - g->lo[d]) / g->h);
-		c0[d] = a < 0 ? 0 : a >= g->n[d] ? g->n[d] - 1 : (int)a;
-		c1[d] = b < 0 ? 0 : b >= g->n[d] ? g->n[d] - 1 : (int)b;
+		c0[d] = a < 0 ? 0 : a >= g->n[d] ? g->n[d] - 1 : (long)a;
+		c1[d] = b < 0 ? 0 : b >= g->n[d] ? g->n[d] - 1 : (long)b;
 	}
+}
+
+static long long cell_key(const struct grid *g, long i, long j, long k)
+{
+	return ((long long)k * g->n[1] + j) * g->n[0] + i;
+}
+
+static size_t cell_hash(const struct grid *g, long long key)
+{
+	unsigned long long x = (unsigned long long)key * 0x9E3779B97F4A7C15ull;
+	return (size_t)(x ^ (x >> 29)) & g->mask;
+}
+
+/* the slot of key, or of the empty slot where it would go */
+static size_t cell_slot(const struct grid *g, long long key)
+{
+	size_t q = cell_hash(g, key);
+	while (g->key[q] != key && g->key[q] != -1)
+		q = (q + 1) & g->mask;
+	return q;
 }
 
 static void tri_box(const struct mesh *m, int t, double lo[3], double hi[3])
@@ -174,6 +218,81 @@ static void tri_box(const struct mesh *m, int t, double lo[3], double hi[3])
 			hi[d] = fmax(hi[d], v);
 		}
 	}
+}
+
+/* the grid's construction, by the threads over ranges of triangles */
+struct grid_job {
+	struct grid *g;
+	const struct mesh *m;
+	double *cnt;            /* per triangle: its cell entries */
+	const size_t *off;      /* per triangle: its first entry */
+	struct ekey {
+		unsigned long long key;
+		size_t i;
+	} *ek;
+	struct gitem *raw;
+};
+
+static void count_range(void *ctx, size_t lo, size_t hi, int w)
+{
+	(void)w;
+	struct grid_job *j = ctx;
+	for (size_t t = lo; t < hi; t++) {
+		j->cnt[t] = 0;
+		if (!j->m->tri[t].alive)
+			continue;
+		double blo[3], bhi[3];
+		long c0[3], c1[3];
+		tri_box(j->m, (int)t, blo, bhi);
+		cell_range(j->g, blo, bhi, c0, c1);
+		j->cnt[t] = (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+			    (double)(c1[2] - c0[2] + 1);
+	}
+}
+
+static void fill_range(void *ctx, size_t lo, size_t hi, int w)
+{
+	(void)w;
+	struct grid_job *j = ctx;
+	for (size_t t = lo; t < hi; t++) {
+		if (!j->m->tri[t].alive)
+			continue;
+		double blo[3], bhi[3];
+		long c0[3], c1[3];
+		tri_box(j->m, (int)t, blo, bhi);
+		struct gitem it = {{0}, {0}, (int)t};
+		for (int d = 0; d < 3; d++) {
+			it.lo[d] = (float)blo[d];
+			if ((double)it.lo[d] > blo[d])
+				it.lo[d] = nextafterf(it.lo[d], -INFINITY);
+			it.hi[d] = (float)bhi[d];
+			if ((double)it.hi[d] < bhi[d])
+				it.hi[d] = nextafterf(it.hi[d], INFINITY);
+		}
+		cell_range(j->g, blo, bhi, c0, c1);
+		size_t e = j->off[t];
+		for (long k = c0[2]; k <= c1[2]; k++)
+			for (long jj = c0[1]; jj <= c1[1]; jj++)
+				for (long i = c0[0]; i <= c1[0]; i++) {
+					j->ek[e].key = (unsigned long long)cell_key(j->g, i, jj, k);
+					j->ek[e].i = e;
+					j->raw[e++] = it;
+				}
+	}
+}
+
+/* Triangles per thread at least, building the grid. */
+#define GRID_MIN_TRIS 4096
+
+/* the cell entries of the alive triangles at the grid's cell size, per
+ * triangle in j->cnt, and their total */
+static double grid_entries(struct grid_job *j)
+{
+	par_for(j->m->ntri, GRID_MIN_TRIS, count_range, j);
+	double total = 0;
+	for (size_t t = 0; t < j->m->ntri; t++)
+		total += j->cnt[t];
+	return total;
 }
 
 static void grid_build(struct grid *g, const struct mesh *m)
@@ -196,63 +315,96 @@ static void grid_build(struct grid *g, const struct mesh *m)
 		ntri += m->tri[t].alive != 0;
 	memset(g, 0, sizeof *g);
 	double h = nseg ? GRID_CELL_SEGS * len / (double)nseg : 1;
-	double ext[3], cells = 1;
+	double ext[3];
 	for (int d = 0; d < 3; d++) {
 		ext[d] = hi[d] > lo[d] ? hi[d] - lo[d] : 0;
 		g->lo[d] = lo[d] > -INFINITY && lo[d] < INFINITY ? lo[d] : 0;
 	}
 	if (!(h > 0))
 		h = 1;
-	/* coarsen until the cell count is at most GRID_CELLS_PER_TRI per
-	 * triangle (each round at least halves it) */
-	double cap = GRID_CELLS_PER_TRI * (double)ntri + 8;
+	struct grid_job job = {g, m, xreallocarray(NULL, m->ntri + 1, sizeof *job.cnt), NULL, NULL,
+			       NULL};
+	/* cell indices stay far inside a long long, and the triangles'
+	 * boxes within GRID_ENTRIES_PER_TRI cells each on average */
 	for (;;) {
-		cells = 1;
+		double cells = 1;
 		for (int d = 0; d < 3; d++)
 			cells *= floor(ext[d] / h) + 1;
-		if (cells <= cap)
-			break;
-		h *= fmax(1.26, cbrt(cells / cap));
-	}
-	g->h = h;
-	for (int d = 0; d < 3; d++)
-		g->n[d] = (int)floor(ext[d] / h) + 1;
-	size_t nc = (size_t)g->n[0] * (size_t)g->n[1] * (size_t)g->n[2];
-	g->start = xcalloc(nc + 1, sizeof *g->start);
-	/* two passes: count per cell, then fill */
-	for (int pass = 0; pass < 2; pass++) {
-		for (size_t t = 0; t < m->ntri; t++) {
-			if (!m->tri[t].alive)
-				continue;
-			double blo[3], bhi[3];
-			int c0[3], c1[3];
-			tri_box(m, (int)t, blo, bhi);
-			cell_range(g, blo, bhi, c0, c1);
-			for (int k = c0[2]; k <= c1[2]; k++)
-				for (int j = c0[1]; j <= c1[1]; j++)
-					for (int i = c0[0]; i <= c1[0]; i++) {
-						size_t c = ((size_t)k * (size_t)g->n[1] + (size_t)j) *
-							   (size_t)g->n[0] + (size_t)i;
-						if (pass == 0)
-							g->start[c + 1]++;
-						else
-							g->item[g->start[c]++] = (int)t;
-					}
+		if (cells < 1e15) {
+			g->h = h;
+			for (int d = 0; d < 3; d++)
+				g->n[d] = (long)floor(ext[d] / h) + 1;
+			if (grid_entries(&job) <= GRID_ENTRIES_PER_TRI * (double)ntri + 64)
+				break;
 		}
-		if (pass == 0) {
-			for (size_t c = 0; c < nc; c++)
-				g->start[c + 1] += g->start[c];
-			g->item = xreallocarray(NULL, g->start[nc] + 1, sizeof *g->item);
-		} else {
-			/* the fill advanced each start to the next cell's */
-			memmove(g->start + 1, g->start, nc * sizeof *g->start);
-			g->start[0] = 0;
-		}
+		h *= 2;
 	}
+	/* the entries (cell index, triangle) in the triangles' order, sorted
+	 * by cell index (LSD radix, 16 bits a pass: stable, so a cell's
+	 * triangles stay in increasing order), then the occupied cells
+	 * hashed once each */
+	size_t *off = xreallocarray(NULL, m->ntri + 1, sizeof *off), ne = 0;
+	for (size_t t = 0; t < m->ntri; t++) {
+		off[t] = ne;
+		ne += (size_t)job.cnt[t];
+	}
+	free(job.cnt);
+	struct ekey *ek = xreallocarray(NULL, ne + 1, sizeof *ek), *tmp = xreallocarray(NULL, ne + 1, sizeof *tmp);
+	struct gitem *raw = xreallocarray(NULL, ne + 1, sizeof *raw);
+	job.off = off;
+	job.ek = ek;
+	job.raw = raw;
+	par_for(m->ntri, GRID_MIN_TRIS, fill_range, &job);
+	free(off);
+	unsigned long long kmax = (unsigned long long)cell_key(g, g->n[0] - 1, g->n[1] - 1, g->n[2] - 1);
+	size_t *bucket = xreallocarray(NULL, 65536 + 1, sizeof *bucket);
+	for (int shift = 0; shift < 64 && (kmax >> shift) > 0; shift += 16) {
+		memset(bucket, 0, (65536 + 1) * sizeof *bucket);
+		for (size_t x = 0; x < ne; x++)
+			bucket[((ek[x].key >> shift) & 0xffff) + 1]++;
+		for (size_t q = 0; q < 65536; q++)
+			bucket[q + 1] += bucket[q];
+		for (size_t x = 0; x < ne; x++)
+			tmp[bucket[(ek[x].key >> shift) & 0xffff]++] = ek[x];
+		struct ekey *sw = ek;
+		ek = tmp;
+		tmp = sw;
+	}
+	free(bucket);
+	free(tmp);
+	g->item = xreallocarray(NULL, ne + 1, sizeof *g->item);
+	size_t nocc = 0;
+	for (size_t x = 0; x < ne; x++) {
+		g->item[x] = raw[ek[x].i];
+		nocc += x == 0 || ek[x].key != ek[x - 1].key;
+	}
+	free(raw);
+	size_t slots = 1024;
+	while (slots < 2 * nocc)
+		slots *= 2;
+	g->mask = slots - 1;
+	g->nocc = nocc;
+	g->key = xreallocarray(NULL, slots, sizeof *g->key);
+	g->rank = xreallocarray(NULL, slots, sizeof *g->rank);
+	g->start = xreallocarray(NULL, nocc + 1, sizeof *g->start);
+	for (size_t q = 0; q < slots; q++)
+		g->key[q] = -1;
+	size_t r = 0;
+	for (size_t x = 0; x < ne; x++)
+		if (x == 0 || ek[x].key != ek[x - 1].key) {
+			size_t q = cell_slot(g, (long long)ek[x].key);
+			g->key[q] = (long long)ek[x].key;
+			g->rank[q] = r;
+			g->start[r++] = x;
+		}
+	g->start[nocc] = ne;
+	free(ek);
 }
 
 static void grid_free(struct grid *g)
 {
+	free(g->key);
+	free(g->rank);
 	free(g->start);
 	free(g->item);
 }
@@ -265,61 +417,54 @@ static int cmp_pierce(const void *a, const void *b)
 	return (p->t > q->t) - (p->t < q->t);
 }
 
-size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
+/* the search, shared by the threads: each takes a range of the segments
+ * (in cell order) with its own stamps and list */
+struct pierce_job {
+	const struct mesh *m;
+	const struct grid *g;
+	const int *order;
+	int **stamp;            /* per worker: stamp[t] = s + 1 once s tested t */
+	struct deloop_pierce **list;
+	size_t *n, *cap;
+};
+
+/* Segments per thread at least. */
+#define PIERCE_MIN_SEGS 4096
+
+static void pierce_range(void *ctx, size_t lo0, size_t hi0, int w)
 {
-	*out = NULL;
-	if (m->ntri == 0)
-		return 0;
-	struct grid g;
-	grid_build(&g, m);
-	/* stamp[t] = s + 1 once segment s has tested triangle t */
-	int *stamp = xcalloc(m->ntri, sizeof *stamp);
-	struct deloop_pierce *list = NULL;
-	size_t n = 0, cap = 0;
-	/* segments visited cell by cell (a counting sort on the cell of
-	 * their first node): consecutive queries then read the same
-	 * triangles, which stay in cache, where the mesh's own order, after
-	 * many splits and merges, is scattered over the surface */
-	size_t nc = (size_t)g.n[0] * (size_t)g.n[1] * (size_t)g.n[2];
-	size_t *at = xcalloc(nc + 1, sizeof *at);
-	int *order = xreallocarray(NULL, m->nseg + 1, sizeof *order);
-	size_t *cellof = xreallocarray(NULL, m->nseg + 1, sizeof *cellof);
-	for (size_t s = 0; s < m->nseg; s++) {
-		if (!m->seg[s].alive)
-			continue;
-		const double *p = m->node[m->seg[s].n[0]].p;
-		int c[3], c1[3];
-		cell_range(&g, p, p, c, c1);
-		cellof[s] = ((size_t)c[2] * (size_t)g.n[1] + (size_t)c[1]) * (size_t)g.n[0] +
-			    (size_t)c[0];
-		at[cellof[s] + 1]++;
-	}
-	for (size_t c = 0; c < nc; c++)
-		at[c + 1] += at[c];
-	size_t nlive = at[nc];
-	for (size_t s = 0; s < m->nseg; s++)
-		if (m->seg[s].alive)
-			order[at[cellof[s]]++] = (int)s;
-	free(at);
-	free(cellof);
-	for (size_t o = 0; o < nlive; o++) {
-		size_t s = (size_t)order[o];
+	struct pierce_job *j = ctx;
+	const struct mesh *m = j->m;
+	const struct grid *g = j->g;
+	if (!j->stamp[w])
+		j->stamp[w] = xcalloc(m->ntri, sizeof *j->stamp[w]);
+	int *stamp = j->stamp[w];
+	for (size_t o = lo0; o < hi0; o++) {
+		size_t s = (size_t)j->order[o];
 		const struct segment *sg = &m->seg[s];
 		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
 		double lo[3], hi[3];
-		int c0[3], c1[3];
+		long c0[3], c1[3];
 		for (int d = 0; d < 3; d++) {
 			lo[d] = fmin(p[d], q[d]);
 			hi[d] = fmax(p[d], q[d]);
 		}
-		cell_range(&g, lo, hi, c0, c1);
-		for (int k = c0[2]; k <= c1[2]; k++)
-			for (int j = c0[1]; j <= c1[1]; j++)
-				for (int i = c0[0]; i <= c1[0]; i++) {
-					size_t c = ((size_t)k * (size_t)g.n[1] + (size_t)j) *
-						   (size_t)g.n[0] + (size_t)i;
-					for (size_t e = g.start[c]; e < g.start[c + 1]; e++) {
-						int t = g.item[e];
+		cell_range(g, lo, hi, c0, c1);
+		for (long k = c0[2]; k <= c1[2]; k++)
+			for (long jj = c0[1]; jj <= c1[1]; jj++)
+				for (long i = c0[0]; i <= c1[0]; i++) {
+					size_t c = cell_slot(g, cell_key(g, i, jj, k));
+					if (g->key[c] == -1)
+						continue;
+					size_t r = g->rank[c];
+					for (size_t e = g->start[r]; e < g->start[r + 1]; e++) {
+						/* boxes apart: no common point (cheaper than
+						 * the orientations) */
+						const struct gitem *b = &g->item[e];
+						if (hi[0] < b->lo[0] || hi[1] < b->lo[1] || hi[2] < b->lo[2] ||
+						    lo[0] > b->hi[0] || lo[1] > b->hi[1] || lo[2] > b->hi[2])
+							continue;
+						int t = b->t;
 						if (stamp[t] == (int)s + 1)
 							continue;
 						stamp[t] = (int)s + 1;
@@ -332,22 +477,141 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 								     m->node[tr->n[1]].p,
 								     m->node[tr->n[2]].p, &u))
 							continue;
-						xgrow(&list, &cap, n + 1, sizeof *list);
-						list[n].s = (int)s;
-						list[n].t = t;
-						list[n].u = u;
+						xgrow(&j->list[w], &j->cap[w], j->n[w] + 1, sizeof *j->list[w]);
+						struct deloop_pierce *x = &j->list[w][j->n[w]++];
+						x->s = (int)s;
+						x->t = t;
+						x->u = u;
 						for (int d = 0; d < 3; d++)
-							list[n].x[d] = p[d] + u * (q[d] - p[d]);
-						n++;
+							x->x[d] = p[d] + u * (q[d] - p[d]);
 					}
 				}
 	}
-	/* the visiting order depends on the grid; the list's does not */
+}
+
+size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
+{
+	*out = NULL;
+	if (m->ntri == 0)
+		return 0;
+	struct grid g;
+	grid_build(&g, m);
+	/* segments visited cell by cell, the cells in the order of their
+	 * index (x fastest, then y, z; a counting sort on the rank of the
+	 * cell of their first node): consecutive queries then read the same
+	 * triangles, which stay in cache, where the mesh's own order, after
+	 * many splits and merges, is scattered over the surface */
+	size_t nocc = g.nocc;
+	size_t *at = xcalloc(nocc + 2, sizeof *at);
+	int *order = xreallocarray(NULL, m->nseg + 1, sizeof *order);
+	size_t *cellof = xreallocarray(NULL, m->nseg + 1, sizeof *cellof);
+	for (size_t s = 0; s < m->nseg; s++) {
+		if (!m->seg[s].alive)
+			continue;
+		const double *p = m->node[m->seg[s].n[0]].p;
+		long c[3], c1[3];
+		cell_range(&g, p, p, c, c1);
+		size_t q = cell_slot(&g, cell_key(&g, c[0], c[1], c[2]));
+		cellof[s] = g.key[q] == -1 ? nocc : g.rank[q];     /* an empty cell: last */
+		at[cellof[s] + 1]++;
+	}
+	for (size_t c = 0; c <= nocc; c++)
+		at[c + 1] += at[c];
+	size_t nlive = at[nocc + 1];
+	for (size_t s = 0; s < m->nseg; s++)
+		if (m->seg[s].alive)
+			order[at[cellof[s]]++] = (int)s;
+	free(at);
+	free(cellof);
+	int nw = par_threads();
+	struct pierce_job j = {m, &g, order, xcalloc((size_t)nw, sizeof *j.stamp),
+			       xcalloc((size_t)nw, sizeof *j.list), xcalloc((size_t)nw, sizeof *j.n),
+			       xcalloc((size_t)nw, sizeof *j.cap)};
+	par_for(nlive, PIERCE_MIN_SEGS, pierce_range, &j);
+	size_t n = 0;
+	for (int w = 0; w < nw; w++)
+		n += j.n[w];
+	struct deloop_pierce *list = n ? xreallocarray(NULL, n, sizeof *list) : NULL;
+	n = 0;
+	for (int w = 0; w < nw; w++) {
+		if (j.n[w])
+			memcpy(list + n, j.list[w], j.n[w] * sizeof *list);
+		n += j.n[w];
+		free(j.list[w]);
+		free(j.stamp[w]);
+	}
+	free(j.list);
+	free(j.stamp);
+	free(j.n);
+	free(j.cap);
+	/* the visiting order depends on the grid and the threads; the
+	 * list's does not */
 	if (n > 1)
 		qsort(list, n, sizeof *list, cmp_pierce);
 	free(order);
-	free(stamp);
 	grid_free(&g);
+	*out = list;
+	return n;
+}
+
+/* the reference search: every alive segment against every alive
+ * triangle whose x range meets its own (a sweep over the triangles
+ * sorted by their x minimum), no grid */
+struct xbox {
+	double lo, hi;
+	int t;
+};
+
+static int cmp_xbox(const void *a, const void *b)
+{
+	const struct xbox *p = a, *q = b;
+	if (p->lo != q->lo)
+		return p->lo < q->lo ? -1 : 1;
+	return (p->t > q->t) - (p->t < q->t);
+}
+
+size_t deloop_pierces_all(const struct mesh *m, struct deloop_pierce **out)
+{
+	*out = NULL;
+	struct xbox *xb = xreallocarray(NULL, m->ntri + 1, sizeof *xb);
+	size_t nb = 0;
+	for (size_t t = 0; t < m->ntri; t++) {
+		if (!m->tri[t].alive)
+			continue;
+		double lo[3], hi[3];
+		tri_box(m, (int)t, lo, hi);
+		xb[nb++] = (struct xbox){lo[0], hi[0], (int)t};
+	}
+	qsort(xb, nb, sizeof *xb, cmp_xbox);
+	struct deloop_pierce *list = NULL;
+	size_t n = 0, cap = 0;
+	for (size_t s = 0; s < m->nseg; s++) {
+		const struct segment *sg = &m->seg[s];
+		if (!sg->alive)
+			continue;
+		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
+		double lo = fmin(p[0], q[0]), hi = fmax(p[0], q[0]);
+		for (size_t k = 0; k < nb && xb[k].lo <= hi; k++) {
+			if (xb[k].hi < lo)
+				continue;
+			const struct triangle *tr = &m->tri[xb[k].t];
+			int touch = 0;
+			for (int a = 0; a < 3; a++)
+				touch |= tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1];
+			double u;
+			if (touch || !pierce(p, q, m->node[tr->n[0]].p, m->node[tr->n[1]].p,
+					     m->node[tr->n[2]].p, &u))
+				continue;
+			xgrow(&list, &cap, n + 1, sizeof *list);
+			list[n] = (struct deloop_pierce){(int)s, xb[k].t, u, {0, 0, 0}};
+			for (int d = 0; d < 3; d++)
+				list[n].x[d] = p[d] + u * (q[d] - p[d]);
+			n++;
+		}
+	}
+	free(xb);
+	if (n > 1)
+		qsort(list, n, sizeof *list, cmp_pierce);
 	*out = list;
 	return n;
 }

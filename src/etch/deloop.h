@@ -7,9 +7,10 @@
  * pass (deloop.c) works in three stages:
  *
  *  1. find every segment that crosses the interior of a triangle it does
- *     not touch ("pierces"), through a uniform grid of the triangles:
- *     O(N) work for N triangles of similar size instead of the thesis'
- *     O(N^2) pair test.  Two triangles intersect exactly when an edge of
+ *     not touch ("pierces"), through a hashed grid of the triangles (cells
+ *     about a segment long, only the occupied ones stored), searched by
+ *     the threads (par.h) in ranges of segments: O(N) work for N
+ *     triangles of similar size instead of the thesis' O(N^2) pair test.  Two triangles intersect exactly when an edge of
  *     one pierces the other (barring exact degeneracies), so the pierces
  *     are the self-intersections;
  *  2. the pierced segments are the ones the intersection curves cross
@@ -61,6 +62,10 @@ struct deloop_pierce {
  * sorted by segment then triangle.  *out is malloc'd (free it; NULL when
  * there are none).  Returns the count. */
 size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out);
+
+/* The same list found without the grid (every pair whose x ranges meet,
+ * O(N^2) at worst): the grid's reference, for the tests. */
+size_t deloop_pierces_all(const struct mesh *m, struct deloop_pierce **out);
 
 /* What one pass did. */
 struct deloop_report {

@@ -62,6 +62,7 @@ struct etch_opts {
 	const char *outvtk;     /* -vtk: VTK XML PolyData, or NULL */
 	int no2d;               /* -no2d: no curves.plot.2D */
 	int last;               /* -last: only the final set is written */
+	int dense;              /* -dense: fmm surfaces uncompacted */
 	int dryrun;             /* -n: check the command line only */
 	const char *input;
 };

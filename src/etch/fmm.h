@@ -117,9 +117,19 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * path3d in curves.plot form (plot3d(5), every
  * triangle a closed 4-point curve p1 p2 p3 p1, bounds the rate box),
  * path2d in curves.plot.2D form (the same triangles projected on x-y).
- * Either path may be NULL.  Files are committed atomically. */
+ * Either path may be NULL.  Files are committed atomically.  Unless
+ * dense, flat regions are written as large triangles (fmm_compact); the
+ * sets are extracted in parallel (par.h), byte-identical for any thread
+ * count. */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
-		      const char *path3d, const char *path2d);
+		      const char *path3d, const char *path2d, int dense);
+
+/* Replaces, in the n triangles *v (9 doubles each, *cap allocated, as
+ * xgrow), every rectangle of grid columns whose surface is one exactly
+ * horizontal plane by a fan of large triangles over the same vertices on
+ * its perimeter (no T-junctions; same area and volume); the other
+ * triangles keep their order.  Returns the new count.  See fmm_compact.c. */
+size_t fmm_compact(const struct fmm *f, double **v, size_t n, size_t *cap);
 
 /* Appends to pf (dim 2) one set, with the given bounds (4 values), of the
  * profile where the plane x = value (axis 0) or y = value (axis 1) cuts

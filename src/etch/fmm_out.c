@@ -14,6 +14,7 @@
  */
 #include "fmm.h"
 #include "fmt_plot.h"
+#include "par.h"
 #include "util.h"
 
 #include <math.h>
@@ -132,40 +133,79 @@ static struct fmm *coarse_view(const struct fmm *f)
 	return c;
 }
 
+/* triangle i as a closed curve p1 p2 p3 p1 (fmt_plot_curves formats in
+ * parallel), in 3D and projected on x-y */
+static void get3(void *ctx, size_t i, double *c)
+{
+	const struct tris *tr = ctx;
+	memcpy(c, tr->v + 9 * i, 9 * sizeof *c);
+	memcpy(c + 9, tr->v + 9 * i, 3 * sizeof *c);
+}
+
+static void get2(void *ctx, size_t i, double *c)
+{
+	const double *v = ((const struct tris *)ctx)->v + 9 * i;
+	double q[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
+	memcpy(c, q, sizeof q);
+}
+
+/* the sets of one batch, extracted in parallel: one per time */
+struct batch {
+	const struct fmm *f;
+	const double *times;
+	struct tris *tr;
+	int dense;
+};
+
+static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
+{
+	(void)worker;
+	struct batch *b = ctx;
+	for (size_t k = lo; k < hi; k++) {
+		struct tris *tr = &b->tr[k];
+		tr->n = 0;
+		fmm_surface(b->f, b->times[k], collect, tr);
+		if (!b->dense)
+			tr->n = fmm_compact(b->f, &tr->v, tr->n, &tr->cap);
+	}
+}
+
 void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
-		      const char *path3d, const char *path2d)
+		      const char *path3d, const char *path2d, int dense)
 {
 	struct fmm *f = coarse_view(fine);
 	struct plot_writer *w3 = path3d ? fmt_plot_open(path3d, 3) : NULL;
 	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
 	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
 	fmt_plot_labels(w2, fmt_labels_std(LABELS_TOPVIEW));
-	struct tris tr = {NULL, 0, 0};
-	for (int k = 0; k < ntimes; k++) {
-		tr.n = 0;
-		fmm_surface(f, times[k], collect, &tr);
-		if (tr.n > PLOT_MAX_COUNT)
-			die("fmm: %zu triangles at t = %g s, more than a plot file holds",
-			    tr.n, times[k]);
-		if (w3) {
-			fmt_plot_begin_set(w3, f->bounds, (long)tr.n);
-			for (size_t i = 0; i < tr.n; i++) {
-				double c[12];
-				memcpy(c, tr.v + 9 * i, 9 * sizeof *c);
-				memcpy(c + 9, tr.v + 9 * i, 3 * sizeof *c);
-				fmt_plot_curve(w3, 4, c);
+	/* sets are extracted a thread's worth at a time (each set is one
+	 * thread's work, so the triangles do not depend on the thread
+	 * count), and written in order */
+	int nb = par_threads();
+	struct tris *all = xcalloc((size_t)nb, sizeof *all);
+	for (int k0 = 0; k0 < ntimes; k0 += nb) {
+		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
+		struct batch b = {f, times + k0, all, dense};
+		par_for((size_t)m, 1, extract_range, &b);
+		for (int q = 0; q < m; q++) {
+			struct tris *tr = &all[q];
+			int k = k0 + q;
+			if (tr->n > PLOT_MAX_COUNT)
+				die("fmm: %zu triangles at t = %g s, more than a plot file holds",
+				    tr->n, times[k]);
+			if (w3) {
+				fmt_plot_begin_set(w3, f->bounds, (long)tr->n);
+				fmt_plot_curves(w3, tr->n, 4, get3, tr);
 			}
-		}
-		if (w2) {
-			fmt_plot_begin_set(w2, f->bounds, (long)tr.n);
-			for (size_t i = 0; i < tr.n; i++) {
-				const double *v = tr.v + 9 * i;
-				double c[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
-				fmt_plot_curve(w2, 4, c);
+			if (w2) {
+				fmt_plot_begin_set(w2, f->bounds, (long)tr->n);
+				fmt_plot_curves(w2, tr->n, 4, get2, tr);
 			}
 		}
 	}
-	free(tr.v);
+	for (int q = 0; q < nb; q++)
+		free(all[q].v);
+	free(all);
 	fmm_free(f);
 	if (w3)
 		fmt_plot_close(w3);

@@ -25,7 +25,7 @@ static const char usage[] =
 	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm|cell|huygens]\n"
-	"            [-refine n|nx ny nz|auto]\n"
+	"            [-refine n|nx ny nz|auto] [-dense]\n"
 	"            [-o curves.plot] [-no2d] [-last] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
 	"            [-threads n] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
@@ -54,6 +54,8 @@ static const char usage[] =
 	"  -refine n|nx ny nz|auto  with -method fmm: subdivide every rate cell\n"
 	"                   n times in z (or nx, ny, nz in x, y, z); auto picks z\n"
 	"                   from the standing waves (the default)\n"
+	"  -dense           with -method fmm: write flat regions cell by cell, as\n"
+	"                   marching tetrahedra give them (default: large triangles)\n"
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
@@ -169,6 +171,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->no2d = 1;
 		else if (args_flag(&a, "-last"))
 			o->last = 1;
+		else if (args_flag(&a, "-dense"))
+			o->dense = 1;
 		else if (args_flag(&a, "-n"))
 			o->dryrun = 1;
 		else if (args_flag(&a, "-q"))
@@ -231,6 +235,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		args_error(&a, "-refine goes with -method fmm or -xcheck");
 	if (o->method >= METHOD_CELL && (o->xcheck || o->deloop || cutaxis))
 		args_error(&a, "-method cell and huygens take no -xcheck, -deloop or -cut");
+	if (o->dense && o->method != METHOD_FMM)
+		args_error(&a, "-dense goes with -method fmm");
 	if (o->xcheck && o->method == METHOD_FMM)
 		args_error(&a, "-xcheck compares the ray-string run with fast marching: not with -method fmm");
 	/* fast marching by default resolves the standing waves in z */
@@ -399,7 +405,7 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 	double *times = print_times(o, &n);
 	/* -last: only the final set is written */
 	int first = o->last ? n - 1 : 0;
-	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d);
+	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d, o->dense);
 	if (o->cut_axis >= 0 && o->outcut) {
 		/* bounds as the ray-string cut: the other axis' range, then z */
 		int other = 1 - o->cut_axis;

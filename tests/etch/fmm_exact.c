@@ -348,8 +348,8 @@ static void test_surface(void)
 	CHECK(st.nzmax < -1 + 1e-9, "t = 0: a normal points up");
 
 	const double times[3] = {0, 0.5, 3};
-	fmm_write_curves(f, times, 3, "c.plot", "c.plot.2D");
-	fmm_write_curves(f, times, 3, "d.plot", "d.plot.2D");
+	fmm_write_curves(f, times, 3, "c.plot", "c.plot.2D", 0);
+	fmm_write_curves(f, times, 3, "d.plot", "d.plot.2D", 0);
 	CHECK(same_file("c.plot", "d.plot") && same_file("c.plot.2D", "d.plot.2D"),
 	      "rewriting gave different bytes");
 	struct plot_file *p3 = fmt_plot_read("c.plot", 3), *p2 = fmt_plot_read("c.plot.2D", 2);
@@ -512,7 +512,7 @@ static int curves(int argc, char **argv)
 	char *p2 = xmalloc(len + 4);
 	memcpy(p2, argv[4], len);
 	memcpy(p2 + len, ".2D", 4);
-	fmm_write_curves(f, t, nt, argv[4], p2);
+	fmm_write_curves(f, t, nt, argv[4], p2, 1);
 	free(p2);
 	free(t);
 	fmm_free(f);
@@ -790,6 +790,91 @@ static int bench(int argc, char **argv)
 	return 0;
 }
 
+/* surfstat FILE.plot: per set, the triangles, their total area, the
+ * signed volume they enclose with the origin (sum of p0 . p1 x p2 / 6)
+ * and the open edges (used by one triangle only: count and length, the
+ * vertices welded on a 1e-9 um lattice: marching tetrahedra compute a
+ * vertex once per tetrahedron, equal only to rounding), for comparing
+ * the compact and the dense fast-marching output */
+struct edge {
+	double a[3], b[3];
+};
+
+static int vcmp(const double *a, const double *b)
+{
+	for (int d = 0; d < 3; d++)
+		if (a[d] != b[d])
+			return a[d] < b[d] ? -1 : 1;
+	return 0;
+}
+
+static int edge_cmp(const void *x, const void *y)
+{
+	const struct edge *e = x, *f = y;
+	int c = vcmp(e->a, f->a);
+	return c ? c : vcmp(e->b, f->b);
+}
+
+static int surfstat(int argc, char **argv)
+{
+	if (argc != 3)
+		die("usage: fmm_exact surfstat FILE.plot");
+	struct plot_file *pf = fmt_plot_read(argv[2], 3);
+	for (int k = 0; k < pf->nsets; k++) {
+		const struct plot_set *s = &pf->sets[k];
+		double area = 0, vol = 0, olen = 0;
+		long open = 0;
+		struct edge *e = xreallocarray(NULL, 3 * (size_t)s->ncurves + 1, sizeof *e);
+		size_t ne = 0;
+		for (int c = 0; c < s->ncurves; c++) {
+			const double *p = s->curves[c].p;
+			if (s->curves[c].npts != 4)
+				die("%s: set %d: a curve of %d points", argv[2], k + 1, s->curves[c].npts);
+			double u[3], v[3];
+			for (int d = 0; d < 3; d++) {
+				u[d] = p[3 + d] - p[d];
+				v[d] = p[6 + d] - p[d];
+			}
+			double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+				       u[0] * v[1] - u[1] * v[0]};
+			area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+			vol += (p[0] * (p[4] * p[8] - p[5] * p[7]) - p[1] * (p[3] * p[8] - p[5] * p[6]) +
+				p[2] * (p[3] * p[7] - p[4] * p[6])) / 6;
+			for (int q = 0; q < 3; q++) {
+				const double *a = p + 3 * q, *b = p + 3 * ((q + 1) % 3);
+				for (int d = 0; d < 3; d++) {
+					e[ne].a[d] = round(a[d] * 1e9);
+					e[ne].b[d] = round(b[d] * 1e9);
+				}
+				if (vcmp(e[ne].a, e[ne].b) > 0) {
+					struct edge x = e[ne];
+					memcpy(e[ne].a, x.b, sizeof x.b);
+					memcpy(e[ne].b, x.a, sizeof x.a);
+				}
+				ne++;
+			}
+		}
+		qsort(e, ne, sizeof *e, edge_cmp);
+		for (size_t i = 0; i < ne;) {
+			size_t j = i + 1;
+			while (j < ne && edge_cmp(&e[i], &e[j]) == 0)
+				j++;
+			if (j - i == 1) {
+				open++;
+				olen += 1e-9 * sqrt((e[i].a[0] - e[i].b[0]) * (e[i].a[0] - e[i].b[0]) +
+						    (e[i].a[1] - e[i].b[1]) * (e[i].a[1] - e[i].b[1]) +
+						    (e[i].a[2] - e[i].b[2]) * (e[i].a[2] - e[i].b[2]));
+			}
+			i = j;
+		}
+		free(e);
+		printf("set %d triangles %d area %.17g volume %.17g open %ld length %.17g\n", k + 1,
+		       s->ncurves, area, vol, open, olen);
+	}
+	fmt_plot_free(pf);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog("fmm_exact");
@@ -801,6 +886,8 @@ int main(int argc, char **argv)
 		return xcheck(argc, argv);
 	if (argc > 1 && strcmp(argv[1], "bias") == 0)
 		return bias(argc, argv);
+	if (argc > 1 && strcmp(argv[1], "surfstat") == 0)
+		return surfstat(argc, argv);
 	test_plane();
 	test_zonly();
 	test_sphere();
