@@ -22,7 +22,7 @@ dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 secs=${3:-60}
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 CLANG=${FUZZ_CC:-clang}
-READERS="splat bleach contour plot2d plot3d options template rate_ascii rate_binary gds"
+READERS="splat bleach contour stack plot2d plot3d options template rate_ascii rate_binary gds"
 FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11 -I$top/src/lib"
 
 command -v "$CLANG" >/dev/null 2>&1 || { echo "fuzz: $CLANG is not installed (apt-get install clang libclang-rt-14-dev)" >&2; exit 77; }

@@ -1,8 +1,8 @@
 /*
  * fuzz_reader.c - the libFuzzer target of one file reader, chosen at
  * build time with -DREADER=NAME (make fuzz builds one binary per reader:
- * splat, bleach, contour, plot2d, plot3d, options, template, rate_ascii,
- * rate_binary).  The input goes to a private temporary file and through
+ * splat, bleach, contour, stack, plot2d, plot3d, options, template,
+ * rate_ascii, rate_binary).  The input goes to a private temporary file and through
  * the library's reader exactly as a program reads it; die() is turned
  * into a longjmp (util_set_die_hook), so an input the reader rejects is
  * an ordinary return, and only a crash, a sanitizer report, a hang or
@@ -26,6 +26,7 @@
 #include "fmt_plot.h"
 #include "fmt_rate.h"
 #include "fmt_splat.h"
+#include "fmt_stack.h"
 #include "fmt_template.h"
 #include "util.h"
 
@@ -151,6 +152,8 @@ static void read_it(void)
 		fmt_bleach_read(path, &in);
 	} else if (R(contour)) {
 		fmt_contour_free(fmt_contour_read(path, 0));
+	} else if (R(stack)) {
+		fmt_stack_free(fmt_stack_read(path));
 	} else if (R(plot2d)) {
 		fmt_plot_free(fmt_plot_read(path, 2));
 	} else if (R(plot3d)) {
