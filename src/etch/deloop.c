@@ -489,13 +489,21 @@ static void pierce_range(void *ctx, size_t lo0, size_t hi0, int w)
 	}
 }
 
-size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
+/* deloop_pierces, and the grid's geometry (lo, h, n) in *geo if not NULL */
+static size_t pierces_geo(const struct mesh *m, struct deloop_pierce **out, struct grid *geo)
 {
 	*out = NULL;
+	if (geo)
+		memset(geo, 0, sizeof *geo);
 	if (m->ntri == 0)
 		return 0;
 	struct grid g;
 	grid_build(&g, m);
+	if (geo) {
+		memcpy(geo->lo, g.lo, sizeof g.lo);
+		geo->h = g.h;
+		memcpy(geo->n, g.n, sizeof g.n);
+	}
 	/* segments visited cell by cell, the cells in the order of their
 	 * index (x fastest, then y, z; a counting sort on the rank of the
 	 * cell of their first node): consecutive queries then read the same
@@ -554,6 +562,11 @@ size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
 	return n;
 }
 
+size_t deloop_pierces(const struct mesh *m, struct deloop_pierce **out)
+{
+	return pierces_geo(m, out, NULL);
+}
+
 /* the reference search: every alive segment against every alive
  * triangle whose x range meets its own (a sweep over the triangles
  * sorted by their x minimum), no grid */
@@ -610,6 +623,340 @@ size_t deloop_pierces_all(const struct mesh *m, struct deloop_pierce **out)
 		}
 	}
 	free(xb);
+	if (n > 1)
+		qsort(list, n, sizeof *list, cmp_pierce);
+	*out = list;
+	return n;
+}
+
+/* The passes after the first search only near what changed.  A pierce
+ * depends on nothing but its segment's and triangle's nodes (indices and
+ * positions), so the list of a mesh equals the previous search's pierces
+ * whose segment and triangle are unchanged, plus the pierces of a changed
+ * ("dirty": new, renumbered, re-noded or with a node moved) segment or
+ * triangle.  Those meet in a cell that a dirty element's box touches:
+ * the search lists triangles only in those cells and tests only the pairs
+ * with a dirty member.  Sorted as deloop_pierces, the list is the same,
+ * bit for bit (no test calls it alone: etch's outputs with it, on every
+ * example with -deloop and tests/bench/etchfast.sh's spheres, were
+ * compared with cmp to those of the full search every pass). */
+struct deloop_snap {
+	size_t nnode, nseg, ntri;
+	struct snode {
+		double p[3];
+		int alive;
+	} *node;
+	struct sseg {
+		int n[2], alive;
+	} *seg;
+	struct stri {
+		int n[3], alive;
+	} *tri;
+	struct deloop_pierce *pc;    /* the pierces of that mesh */
+	size_t np;
+	struct grid geo;        /* the last full search's cells (lo, h, n) */
+};
+
+/* Dirty elements above this fraction of the alive ones: the full search. */
+#define NEAR_MAX_DIRTY 0.125
+
+static void snap_take(struct deloop_snap *sn, const struct mesh *m, const struct deloop_pierce *pc,
+		      size_t np)
+{
+	sn->nnode = m->nnode;
+	sn->nseg = m->nseg;
+	sn->ntri = m->ntri;
+	sn->node = xreallocarray(sn->node, m->nnode + 1, sizeof *sn->node);
+	sn->seg = xreallocarray(sn->seg, m->nseg + 1, sizeof *sn->seg);
+	sn->tri = xreallocarray(sn->tri, m->ntri + 1, sizeof *sn->tri);
+	for (size_t i = 0; i < m->nnode; i++) {
+		memcpy(sn->node[i].p, m->node[i].p, sizeof sn->node[i].p);
+		sn->node[i].alive = m->node[i].alive != 0;
+	}
+	for (size_t s = 0; s < m->nseg; s++)
+		sn->seg[s] = (struct sseg){{m->seg[s].n[0], m->seg[s].n[1]}, m->seg[s].alive != 0};
+	for (size_t t = 0; t < m->ntri; t++)
+		sn->tri[t] = (struct stri){{m->tri[t].n[0], m->tri[t].n[1], m->tri[t].n[2]},
+					   m->tri[t].alive != 0};
+	sn->pc = xreallocarray(sn->pc, np + 1, sizeof *sn->pc);
+	if (np)
+		memcpy(sn->pc, pc, np * sizeof *pc);
+	sn->np = np;
+}
+
+static void snap_free(struct deloop_snap *sn)
+{
+	/* sn->geo holds no arrays */
+	free(sn->node);
+	free(sn->seg);
+	free(sn->tri);
+	free(sn->pc);
+	memset(sn, 0, sizeof *sn);
+}
+
+/* the slot of key in a set of 2^k slots (mask), or the empty one (-1) where it would go */
+static size_t set_slot(const long long *key, size_t mask, long long k)
+{
+	unsigned long long x = (unsigned long long)k * 0x9E3779B97F4A7C15ull;
+	size_t q = (size_t)(x ^ (x >> 29)) & mask;
+	while (key[q] != k && key[q] != -1)
+		q = (q + 1) & mask;
+	return q;
+}
+
+/* the cells of box lo..hi (via g's geometry) into the set, growing it */
+static void set_add_box(const struct grid *g, const double *lo, const double *hi, long long **key,
+			size_t *mask, size_t *nkey)
+{
+	long c0[3], c1[3];
+	cell_range(g, lo, hi, c0, c1);
+	for (long k = c0[2]; k <= c1[2]; k++)
+		for (long j = c0[1]; j <= c1[1]; j++)
+			for (long i = c0[0]; i <= c1[0]; i++) {
+				if (2 * (*nkey + 1) > *mask + 1) {
+					size_t nm = 2 * (*mask + 1) - 1;
+					long long *nk = xreallocarray(NULL, nm + 1, sizeof *nk);
+					for (size_t q = 0; q <= nm; q++)
+						nk[q] = -1;
+					for (size_t q = 0; q <= *mask; q++)
+						if ((*key)[q] != -1)
+							nk[set_slot(nk, nm, (*key)[q])] = (*key)[q];
+					free(*key);
+					*key = nk;
+					*mask = nm;
+				}
+				long long c = cell_key(g, i, j, k);
+				size_t q = set_slot(*key, *mask, c);
+				if ((*key)[q] == -1) {
+					(*key)[q] = c;
+					(*nkey)++;
+				}
+			}
+}
+
+static void seg_box(const struct mesh *m, int s, double lo[3], double hi[3])
+{
+	const double *p = m->node[m->seg[s].n[0]].p, *q = m->node[m->seg[s].n[1]].p;
+	for (int d = 0; d < 3; d++) {
+		lo[d] = fmin(p[d], q[d]);
+		hi[d] = fmax(p[d], q[d]);
+	}
+}
+
+/* the pierces of m, searched near what changed since sn (whose geometry
+ * *geo, sn->geo or another, becomes that of the search if it is a full one) */
+static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap *sn,
+				  struct deloop_pierce **out, struct grid *geo)
+{
+	/* the dirty nodes, segments and triangles */
+	unsigned char *dn = xcalloc(m->nnode + 1, 1), *ds = xcalloc(m->nseg + 1, 1),
+		      *dt = xcalloc(m->ntri + 1, 1);
+	for (size_t i = 0; i < m->nnode; i++)
+		dn[i] = i >= sn->nnode || !sn->node[i].alive ||
+			memcmp(sn->node[i].p, m->node[i].p, sizeof sn->node[i].p) != 0;
+	size_t nds = 0, ndt = 0;
+	for (size_t s = 0; s < m->nseg; s++) {
+		const struct segment *sg = &m->seg[s];
+		if (!sg->alive)
+			continue;
+		ds[s] = s >= sn->nseg || !sn->seg[s].alive || sn->seg[s].n[0] != sg->n[0] ||
+			sn->seg[s].n[1] != sg->n[1] || dn[sg->n[0]] || dn[sg->n[1]];
+		nds += ds[s];
+	}
+	for (size_t t = 0; t < m->ntri; t++) {
+		const struct triangle *tr = &m->tri[t];
+		if (!tr->alive)
+			continue;
+		int d = t >= sn->ntri || !sn->tri[t].alive;
+		for (int a = 0; a < 3 && !d; a++)
+			d = sn->tri[t].n[a] != tr->n[a] || dn[tr->n[a]];
+		dt[t] = (unsigned char)d;
+		ndt += dt[t];
+	}
+	free(dn);
+	if ((double)(nds + ndt) > NEAR_MAX_DIRTY * (double)(m->live_seg + m->live_tri)) {
+		free(ds);
+		free(dt);
+		return pierces_geo(m, out, geo);
+	}
+	/* the cells of the last full search (a node since moved out of its
+	 * box is in a border cell: cell_range clamps, alike for every box),
+	 * coarsened until the dirty boxes fit in GRID_ENTRIES_PER_TRI cells
+	 * each on average (coarser, every triangle's box still does) */
+	struct grid g = sn->geo;
+	if (!(g.h > 0)) {
+		free(ds);
+		free(dt);
+		return pierces_geo(m, out, geo);
+	}
+	for (;;) {
+		double de = 0;
+		for (size_t t = 0; t < m->ntri; t++) {
+			if (!dt[t])
+				continue;
+			double blo[3], bhi[3];
+			long c0[3], c1[3];
+			tri_box(m, (int)t, blo, bhi);
+			cell_range(&g, blo, bhi, c0, c1);
+			de += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+			      (double)(c1[2] - c0[2] + 1);
+		}
+		for (size_t s = 0; s < m->nseg; s++) {
+			if (!ds[s])
+				continue;
+			double blo[3], bhi[3];
+			long c0[3], c1[3];
+			seg_box(m, (int)s, blo, bhi);
+			cell_range(&g, blo, bhi, c0, c1);
+			de += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+			      (double)(c1[2] - c0[2] + 1);
+		}
+		if (de <= GRID_ENTRIES_PER_TRI * (double)(nds + ndt) + 64)
+			break;
+		/* same origin, cells twice as large */
+		g.h *= 2;
+		for (int d = 0; d < 3; d++)
+			g.n[d] = (g.n[d] + 1) / 2;
+	}
+	/* the cells the dirty boxes touch */
+	size_t mask = 1023, nkey = 0;
+	long long *key = xreallocarray(NULL, mask + 1, sizeof *key);
+	for (size_t q = 0; q <= mask; q++)
+		key[q] = -1;
+	/* and their union's box: an element outside it meets no dirty one */
+	double ulo[3] = {INFINITY, INFINITY, INFINITY}, uhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+	for (size_t s = 0; s < m->nseg; s++)
+		if (ds[s]) {
+			double blo[3], bhi[3];
+			seg_box(m, (int)s, blo, bhi);
+			set_add_box(&g, blo, bhi, &key, &mask, &nkey);
+			for (int d = 0; d < 3; d++) {
+				ulo[d] = fmin(ulo[d], blo[d]);
+				uhi[d] = fmax(uhi[d], bhi[d]);
+			}
+		}
+	for (size_t t = 0; t < m->ntri; t++)
+		if (dt[t]) {
+			double blo[3], bhi[3];
+			tri_box(m, (int)t, blo, bhi);
+			set_add_box(&g, blo, bhi, &key, &mask, &nkey);
+			for (int d = 0; d < 3; d++) {
+				ulo[d] = fmin(ulo[d], blo[d]);
+				uhi[d] = fmax(uhi[d], bhi[d]);
+			}
+		}
+	/* every alive triangle in those cells, in increasing order per cell:
+	 * counted, then placed */
+	size_t *start = xcalloc(mask + 2, sizeof *start);
+	for (int fill = 0; fill < 2; fill++) {
+		struct gitem *item = fill ? g.item : NULL;
+		for (size_t t = 0; t < m->ntri; t++) {
+			if (!m->tri[t].alive)
+				continue;
+			double blo[3], bhi[3];
+			long c0[3], c1[3];
+			tri_box(m, (int)t, blo, bhi);
+			if (bhi[0] < ulo[0] || bhi[1] < ulo[1] || bhi[2] < ulo[2] || blo[0] > uhi[0] ||
+			    blo[1] > uhi[1] || blo[2] > uhi[2])
+				continue;
+			cell_range(&g, blo, bhi, c0, c1);
+			struct gitem it = {{0}, {0}, (int)t};
+			for (int d = 0; d < 3; d++) {
+				it.lo[d] = (float)blo[d];
+				if ((double)it.lo[d] > blo[d])
+					it.lo[d] = nextafterf(it.lo[d], -INFINITY);
+				it.hi[d] = (float)bhi[d];
+				if ((double)it.hi[d] < bhi[d])
+					it.hi[d] = nextafterf(it.hi[d], INFINITY);
+			}
+			for (long k = c0[2]; k <= c1[2]; k++)
+				for (long j = c0[1]; j <= c1[1]; j++)
+					for (long i = c0[0]; i <= c1[0]; i++) {
+						size_t q = set_slot(key, mask, cell_key(&g, i, j, k));
+						if (key[q] == -1)
+							continue;
+						if (fill)
+							item[start[q]++] = it;
+						else
+							start[q + 1]++;
+					}
+		}
+		if (!fill) {
+			for (size_t q = 0; q <= mask; q++)
+				start[q + 1] += start[q];
+			g.item = xreallocarray(NULL, start[mask + 1] + 1, sizeof *g.item);
+		} else {
+			/* start[q] is now the end of slot q's run: shift back */
+			for (size_t q = mask + 1; q > 0; q--)
+				start[q] = start[q - 1];
+			start[0] = 0;
+		}
+	}
+	/* the pairs with a dirty member */
+	int *stamp = xcalloc(m->ntri + 1, sizeof *stamp);
+	struct deloop_pierce *list = NULL;
+	size_t n = 0, cap = 0;
+	for (size_t s = 0; s < m->nseg; s++) {
+		const struct segment *sg = &m->seg[s];
+		if (!sg->alive)
+			continue;
+		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
+		double blo[3], bhi[3];
+		long c0[3], c1[3];
+		seg_box(m, (int)s, blo, bhi);
+		if (bhi[0] < ulo[0] || bhi[1] < ulo[1] || bhi[2] < ulo[2] || blo[0] > uhi[0] ||
+		    blo[1] > uhi[1] || blo[2] > uhi[2])
+			continue;
+		cell_range(&g, blo, bhi, c0, c1);
+		for (long k = c0[2]; k <= c1[2]; k++)
+			for (long jj = c0[1]; jj <= c1[1]; jj++)
+				for (long i = c0[0]; i <= c1[0]; i++) {
+					size_t c = set_slot(key, mask, cell_key(&g, i, jj, k));
+					if (key[c] == -1)
+						continue;
+					for (size_t e = start[c]; e < start[c + 1]; e++) {
+						const struct gitem *b = &g.item[e];
+						if (bhi[0] < b->lo[0] || bhi[1] < b->lo[1] || bhi[2] < b->lo[2] ||
+						    blo[0] > b->hi[0] || blo[1] > b->hi[1] || blo[2] > b->hi[2])
+							continue;
+						int t = b->t;
+						if ((!ds[s] && !dt[t]) || stamp[t] == (int)s + 1)
+							continue;
+						stamp[t] = (int)s + 1;
+						const struct triangle *tr = &m->tri[t];
+						int touch = 0;
+						for (int a = 0; a < 3; a++)
+							touch |= tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1];
+						double u;
+						if (touch || !pierce(p, q, m->node[tr->n[0]].p,
+								     m->node[tr->n[1]].p,
+								     m->node[tr->n[2]].p, &u))
+							continue;
+						xgrow(&list, &cap, n + 1, sizeof *list);
+						struct deloop_pierce *x = &list[n++];
+						x->s = (int)s;
+						x->t = t;
+						x->u = u;
+						for (int d = 0; d < 3; d++)
+							x->x[d] = p[d] + u * (q[d] - p[d]);
+					}
+				}
+	}
+	free(stamp);
+	free(start);
+	free(key);
+	free(g.item);
+	/* and the previous ones between clean elements */
+	for (size_t k = 0; k < sn->np; k++) {
+		size_t s = (size_t)sn->pc[k].s, t = (size_t)sn->pc[k].t;
+		if (s < m->nseg && m->seg[s].alive && !ds[s] && t < m->ntri && m->tri[t].alive &&
+		    !dt[t]) {
+			xgrow(&list, &cap, n + 1, sizeof *list);
+			list[n++] = sn->pc[k];
+		}
+	}
+	free(ds);
+	free(dt);
 	if (n > 1)
 		qsort(list, n, sizeof *list, cmp_pierce);
 	*out = list;
@@ -986,9 +1333,12 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 	memset(rep, 0, sizeof *rep);
 	unsigned char *seam = NULL;     /* nodes joined across a seam this run */
 	size_t nseam = 0;
+	struct deloop_snap sn = {0};
 	for (int pass = 0; pass < DELOOP_PASSES; pass++) {
 		struct deloop_pierce *pc;
-		size_t np = deloop_pierces(m, &pc);
+		size_t np = pass == 0 ? pierces_geo(m, &pc, &sn.geo)
+			: deloop_pierces_near(m, &sn, &pc, &sn.geo);
+		snap_take(&sn, m, pc, np);
 		if (pass == 0)
 			rep->crossings = (long)np;
 		rep->left = (long)np;
@@ -1006,10 +1356,11 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 		if (pass + 1 == DELOOP_PASSES) {
 			/* the cap: report what the last pass left, not what it
 			 * started from */
-			rep->left = (long)deloop_pierces(m, &pc);
+			rep->left = (long)deloop_pierces_near(m, &sn, &pc, &sn.geo);
 			free(pc);
 		}
 	}
+	snap_free(&sn);
 	free(seam);
 	rep->open_left = deloop_open_length(m);
 }
