@@ -1327,6 +1327,32 @@ static long merge_away(struct mesh *m, const struct deloop_pierce *pc, size_t np
 	return merged;
 }
 
+/* -check: every search near the changes is compared with a full search,
+ * which must give the same list bit for bit (set by deloop_set_check). */
+static int check_near;
+
+void deloop_set_check(int on)
+{
+	check_near = on;
+}
+
+/* deloop_pierces_near, and under -check its comparison with the full
+ * search */
+static size_t pierces_near_checked(const struct mesh *m, const struct deloop_snap *sn,
+				   struct deloop_pierce **out, struct grid *geo)
+{
+	size_t n = deloop_pierces_near(m, sn, out, geo);
+	if (check_near) {
+		struct deloop_pierce *full;
+		size_t nf = deloop_pierces(m, &full);
+		if (nf != n || (n && memcmp(full, *out, n * sizeof *full) != 0))
+			die("deloop: -check: the search near the changes found %zu crossings, "
+			    "the full search %zu (or other ones)", n, nf);
+		free(full);
+	}
+	return n;
+}
+
 static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
 			  int join, struct deloop_report *rep)
 {
@@ -1337,7 +1363,7 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 	for (int pass = 0; pass < DELOOP_PASSES; pass++) {
 		struct deloop_pierce *pc;
 		size_t np = pass == 0 ? pierces_geo(m, &pc, &sn.geo)
-			: deloop_pierces_near(m, &sn, &pc, &sn.geo);
+			: pierces_near_checked(m, &sn, &pc, &sn.geo);
 		snap_take(&sn, m, pc, np);
 		if (pass == 0)
 			rep->crossings = (long)np;
@@ -1356,7 +1382,7 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 		if (pass + 1 == DELOOP_PASSES) {
 			/* the cap: report what the last pass left, not what it
 			 * started from */
-			rep->left = (long)deloop_pierces_near(m, &sn, &pc, &sn.geo);
+			rep->left = (long)pierces_near_checked(m, &sn, &pc, &sn.geo);
 			free(pc);
 		}
 	}

@@ -86,6 +86,9 @@ struct deloop_report {
 /* Deloops m at time t (s), classifying with the arrival times fm and the
  * rates f.  Returns the number of loops removed.  The mesh stays
  * consistent (mesh_check); call mesh_compact afterwards. */
+/* -check: compare every search near a pass's changes with a full search
+ * (etch dies on a difference). */
+void deloop_set_check(int on);
 long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep);
 

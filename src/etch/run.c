@@ -198,6 +198,7 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		start_flat(m, f, seg);
 	if (o->check)
 		check(m, 0);
+	deloop_set_check(o->check);
 	note_size(m, st);
 	struct etch_out *out = out_open(o, f);
 	struct fmm *fm = NULL;
