@@ -8,8 +8,11 @@ need Xvfb
 need xdotool
 printf '0 1 0 1 0 1\n2\n2\n0 0 0\n1 1 1\n3\n0 0 1\n1 0 0\n0 1 0\n' >v.3D
 # Xvfb picks a free display itself and writes its number (-displayfd),
-# so tests running at the same time never share a server
-Xvfb -displayfd 3 -screen 0 800x800x24 -nolisten tcp 3>dpy.txt >xvfb.log 2>&1 &
+# so tests running at the same time never share a server; -noreset: by
+# default the server resets when its last client (the xdotool probe
+# below) leaves, and refuses connections meanwhile, which made pdraw fail
+# now and then with "cannot open the X display"
+Xvfb -displayfd 3 -screen 0 800x800x24 -nolisten tcp -noreset 3>dpy.txt >xvfb.log 2>&1 &
 xpid=$!
 trap 'kill $xpid 2>/dev/null' EXIT
 i=0
