@@ -142,6 +142,27 @@ static int pierce(const double *p, const double *q, const double *a, const doubl
 	return 1;
 }
 
+/* Whether segment s crosses triangle t of m (pierce), the two sharing no
+ * node; if so, the crossing in *x. */
+static int seg_pierce(const struct mesh *m, int s, int t, struct deloop_pierce *x)
+{
+	const struct segment *sg = &m->seg[s];
+	const struct triangle *tr = &m->tri[t];
+	for (int a = 0; a < 3; a++)
+		if (tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1])
+			return 0;
+	const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
+	double u;
+	if (!pierce(p, q, m->node[tr->n[0]].p, m->node[tr->n[1]].p, m->node[tr->n[2]].p, &u))
+		return 0;
+	x->s = s;
+	x->t = t;
+	x->u = u;
+	for (int d = 0; d < 3; d++)
+		x->x[d] = p[d] + u * (q[d] - p[d]);
+	return 1;
+}
+
 /* A hashed grid of the alive triangles: cells about GRID_CELL_SEGS mean
  * segments across, fixed by the mesh alone, only the occupied ones
  * stored (a surface fills a vanishing part of its box, so a dense array
@@ -159,6 +180,14 @@ struct gitem {
 	float lo[3], hi[3];
 	int t;
 };
+
+/* Whether box [lo, hi] and item b's box have no common point (cheaper
+ * than the orientations of a pierce). */
+static int item_apart(const double *lo, const double *hi, const struct gitem *b)
+{
+	return hi[0] < b->lo[0] || hi[1] < b->lo[1] || hi[2] < b->lo[2] ||
+	       lo[0] > b->hi[0] || lo[1] > b->hi[1] || lo[2] > b->hi[2];
+}
 
 struct grid {
 	double lo[3], h;
@@ -458,32 +487,18 @@ static void pierce_range(void *ctx, size_t lo0, size_t hi0, int w)
 						continue;
 					size_t r = g->rank[c];
 					for (size_t e = g->start[r]; e < g->start[r + 1]; e++) {
-						/* boxes apart: no common point (cheaper than
-						 * the orientations) */
 						const struct gitem *b = &g->item[e];
-						if (hi[0] < b->lo[0] || hi[1] < b->lo[1] || hi[2] < b->lo[2] ||
-						    lo[0] > b->hi[0] || lo[1] > b->hi[1] || lo[2] > b->hi[2])
+						if (item_apart(lo, hi, b))
 							continue;
 						int t = b->t;
 						if (stamp[t] == (int)s + 1)
 							continue;
 						stamp[t] = (int)s + 1;
-						const struct triangle *tr = &m->tri[t];
-						int touch = 0;
-						for (int a = 0; a < 3; a++)
-							touch |= tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1];
-						double u;
-						if (touch || !pierce(p, q, m->node[tr->n[0]].p,
-								     m->node[tr->n[1]].p,
-								     m->node[tr->n[2]].p, &u))
+						struct deloop_pierce x;
+						if (!seg_pierce(m, (int)s, t, &x))
 							continue;
 						xgrow(&j->list[w], &j->cap[w], j->n[w] + 1, sizeof *j->list[w]);
-						struct deloop_pierce *x = &j->list[w][j->n[w]++];
-						x->s = (int)s;
-						x->t = t;
-						x->u = u;
-						for (int d = 0; d < 3; d++)
-							x->x[d] = p[d] + u * (q[d] - p[d]);
+						j->list[w][j->n[w]++] = x;
 					}
 				}
 	}
@@ -607,19 +622,11 @@ size_t deloop_pierces_all(const struct mesh *m, struct deloop_pierce **out)
 		for (size_t k = 0; k < nb && xb[k].lo <= hi; k++) {
 			if (xb[k].hi < lo)
 				continue;
-			const struct triangle *tr = &m->tri[xb[k].t];
-			int touch = 0;
-			for (int a = 0; a < 3; a++)
-				touch |= tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1];
-			double u;
-			if (touch || !pierce(p, q, m->node[tr->n[0]].p, m->node[tr->n[1]].p,
-					     m->node[tr->n[2]].p, &u))
+			struct deloop_pierce x;
+			if (!seg_pierce(m, (int)s, xb[k].t, &x))
 				continue;
 			xgrow(&list, &cap, n + 1, sizeof *list);
-			list[n] = (struct deloop_pierce){(int)s, xb[k].t, u, {0, 0, 0}};
-			for (int d = 0; d < 3; d++)
-				list[n].x[d] = p[d] + u * (q[d] - p[d]);
-			n++;
+			list[n++] = x;
 		}
 	}
 	free(xb);
@@ -900,7 +907,6 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 		const struct segment *sg = &m->seg[s];
 		if (!sg->alive)
 			continue;
-		const double *p = m->node[sg->n[0]].p, *q = m->node[sg->n[1]].p;
 		double blo[3], bhi[3];
 		long c0[3], c1[3];
 		seg_box(m, (int)s, blo, bhi);
@@ -916,29 +922,17 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 						continue;
 					for (size_t e = start[c]; e < start[c + 1]; e++) {
 						const struct gitem *b = &g.item[e];
-						if (bhi[0] < b->lo[0] || bhi[1] < b->lo[1] || bhi[2] < b->lo[2] ||
-						    blo[0] > b->hi[0] || blo[1] > b->hi[1] || blo[2] > b->hi[2])
+						if (item_apart(blo, bhi, b))
 							continue;
 						int t = b->t;
 						if ((!ds[s] && !dt[t]) || stamp[t] == (int)s + 1)
 							continue;
 						stamp[t] = (int)s + 1;
-						const struct triangle *tr = &m->tri[t];
-						int touch = 0;
-						for (int a = 0; a < 3; a++)
-							touch |= tr->n[a] == sg->n[0] || tr->n[a] == sg->n[1];
-						double u;
-						if (touch || !pierce(p, q, m->node[tr->n[0]].p,
-								     m->node[tr->n[1]].p,
-								     m->node[tr->n[2]].p, &u))
+						struct deloop_pierce x;
+						if (!seg_pierce(m, (int)s, t, &x))
 							continue;
 						xgrow(&list, &cap, n + 1, sizeof *list);
-						struct deloop_pierce *x = &list[n++];
-						x->s = (int)s;
-						x->t = t;
-						x->u = u;
-						for (int d = 0; d < 3; d++)
-							x->x[d] = p[d] + u * (q[d] - p[d]);
+						list[n++] = x;
 					}
 				}
 	}
