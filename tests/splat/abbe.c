@@ -23,25 +23,11 @@
 #include "fmt_splat.h"
 #include "splat.h"
 #include "util.h"
+#include "splattest.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { if (!(cond)) { printf("FAIL: " __VA_ARGS__); \
-	printf("\n"); failures++; } } while (0)
-
-static struct splat_input *input(const char *text)
-{
-	FILE *f = fopen("t.in", "w");
-	if (!f)
-		die("t.in:");
-	fputs(text, f);
-	fshut(f, "t.in");
-	return fmt_splat_read("t.in");
-}
 
 /* max |I_abbe - I_hopkins| over every plane of the grid; cells: abbe's
  * cells across the smallest source disc (0: default) */

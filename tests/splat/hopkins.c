@@ -22,27 +22,12 @@
 #include "fmt_splat.h"
 #include "splat.h"
 #include "util.h"
+#include "splattest.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { if (!(cond)) { printf("FAIL: " __VA_ARGS__); \
-	printf("\n"); failures++; } } while (0)
-
-/* Writes text to a file and reads it as a splat input. */
-static struct splat_input *input(const char *text)
-{
-	FILE *f = fopen("t.in", "w");
-	if (!f)
-		die("t.in:");
-	fputs(text, f);
-	fshut(f, "t.in");
-	return fmt_splat_read("t.in");
-}
 
 /* Image on the input's grid with quadrature orders (0: defaults). */
 static double *grid(const struct splat_input *in, int no, int ni)

@@ -24,26 +24,12 @@
 #include "fmt_splat.h"
 #include "splat.h"
 #include "util.h"
+#include "splattest.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { if (!(cond)) { printf("FAIL: " __VA_ARGS__); \
-	printf("\n"); failures++; } } while (0)
-
-static struct splat_input *input(const char *text)
-{
-	FILE *f = fopen("t.in", "w");
-	if (!f)
-		die("t.in:");
-	fputs(text, f);
-	fshut(f, "t.in");
-	return fmt_splat_read("t.in");
-}
 
 /* Largest difference of the coefficients of two masks (same window). */
 static double coef_diff(const struct splat_mask *a, const struct splat_mask *b, double fm)

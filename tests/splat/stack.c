@@ -23,26 +23,12 @@
 #include "fmt_splat.h"
 #include "splat.h"
 #include "util.h"
+#include "splattest.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { if (!(cond)) { printf("FAIL: " __VA_ARGS__); \
-	printf("\n"); failures++; } } while (0)
-
-static struct splat_input *input(const char *text)
-{
-	FILE *f = fopen("t.in", "w");
-	if (!f)
-		die("t.in:");
-	fputs(text, f);
-	fshut(f, "t.in");
-	return fmt_splat_read("t.in");
-}
 
 /* Every plane of the input on its grid (nplanes * nx * ny values), with
  * quadrature orders (0: defaults). */
