@@ -156,6 +156,10 @@ void front_remesh(struct e2 *e, struct front *fr, double smax, double smin, int 
 /* 2D delooping (7.5.3.3): removes the loops of the string; returns how
  * many. */
 long front_deloop(struct e2 *e, struct front *fr);
+/* 1 if segments p1-p2 and q1-q2 cross properly (not at their ends, not
+ * parallel), with the crossing's parameter *u along p (front.c). */
+int e2_crossing(const double *p1, const double *p2, const double *q1, const double *q2,
+		double *u);
 void front_emit(struct e2 *e, const struct front *fr);
 /* Marks the first and last nodes END (and no other). */
 void front_ends(struct e2 *e, struct front *fr);

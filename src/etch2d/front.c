@@ -281,8 +281,8 @@ void front_remesh(struct e2 *e, struct front *fr, double smax, double smin, int 
 
 /* 1 if segments p1-p2 and q1-q2 cross (properly), with the crossing's
  * parameter u along p. */
-static int crossing(const double *p1, const double *p2, const double *q1, const double *q2,
-		    double *u)
+int e2_crossing(const double *p1, const double *p2, const double *q1, const double *q2,
+		double *u)
 {
 	double r0 = p2[0] - p1[0], r1 = p2[1] - p1[1];
 	double s0 = q2[0] - q1[0], s1 = q2[1] - q1[1];
@@ -316,7 +316,7 @@ long front_deloop(struct e2 *e, struct front *fr)
 			    fmax(q1[1], q2[1]) < bz0 || fmin(q1[1], q2[1]) > bz1)
 				continue;
 			double u;
-			if (!crossing(p1, p2, q1, q2, &u))
+			if (!e2_crossing(p1, p2, q1, q2, &u))
 				continue;
 			struct fnode x = fr->v[i];
 			x.p[0] = p1[0] + u * (p2[0] - p1[0]);

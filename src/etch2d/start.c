@@ -28,18 +28,6 @@
 /* A turn smaller than this (radians) is no corner: one node, no fan. */
 #define TURN_TINY 1e-9
 
-static int crosses(const double *p1, const double *p2, const double *q1, const double *q2)
-{
-	double r0 = p2[0] - p1[0], r1 = p2[1] - p1[1];
-	double s0 = q2[0] - q1[0], s1 = q2[1] - q1[1];
-	double den = r0 * s1 - r1 * s0;
-	if (den == 0)
-		return 0;
-	double w0 = q1[0] - p1[0], w1 = q1[1] - p1[1];
-	double t = (w0 * s1 - w1 * s0) / den, v = (w0 * r1 - w1 * r0) / den;
-	return t > 0 && t < 1 && v > 0 && v < 1;
-}
-
 void e2_start_init(struct e2 *e)
 {
 	const char *fn = e->o.startfile ? e->o.startfile : "-start";
@@ -76,10 +64,12 @@ void e2_start_init(struct e2 *e)
 		q[1] = fmin(fmax(q[1], e->z0), e->z1);
 	}
 	for (int i = 0; i + 1 < n; i++)
-		for (int j = i + 2; j + 1 < n; j++)
-			if (crosses(p + 2 * i, p + 2 * i + 2, p + 2 * j, p + 2 * j + 2))
+		for (int j = i + 2; j + 1 < n; j++) {
+			double u;
+			if (e2_crossing(p + 2 * i, p + 2 * i + 2, p + 2 * j, p + 2 * j + 2, &u))
 				die("%s:1: the start profile crosses itself (segments %d and %d)",
 				    fn, i + 1, j + 1);
+		}
 }
 
 int e2_start_etched(const struct e2 *e, double x, double z)
