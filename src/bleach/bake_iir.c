@@ -212,28 +212,27 @@ int bake_iir_wanted(int p, double d, double sigma)
 	return p >= 2 && s >= 4 && 17 * s > BAKE_IIR_TAPS && 17 * s < p;
 }
 
-void bake_iir_x(double *f, int nx, int ny, int nz, double dx, double sigma)
+/* The pass along x (along_x 1: rows of period nx - 1) or along y (0:
+ * columns of period ny - 1) of every plane, IIR_LANES lines at a time. */
+static void iir_axis(double *f, int nx, int ny, int nz, double h, double sigma, int along_x)
 {
 	struct iir c;
-	iir_init(&c, sigma / dx);
-	int p = nx - 1;
-	size_t nb = ((size_t)ny + IIR_LANES - 1) / IIR_LANES;
+	iir_init(&c, sigma / h);
+	int p = (along_x ? nx : ny) - 1;
+	size_t nb = ((size_t)(along_x ? ny : nx) + IIR_LANES - 1) / IIR_LANES;
 	size_t per = 3 * (size_t)(p + 2 * c.W) * IIR_LANES;
-	struct pass ps = {&c, f, nx, ny, p, 1, nb, (size_t)nx * (size_t)ny,
+	struct pass ps = {&c, f, nx, ny, p, along_x, nb, (size_t)nx * (size_t)ny,
 			  xreallocarray(NULL, (size_t)par_threads() * per, sizeof(double))};
 	par_for((size_t)nz * nb, 1, pass_blocks, &ps);
 	free(ps.scratch);
 }
 
+void bake_iir_x(double *f, int nx, int ny, int nz, double dx, double sigma)
+{
+	iir_axis(f, nx, ny, nz, dx, sigma, 1);
+}
+
 void bake_iir_y(double *f, int nx, int ny, int nz, double dy, double sigma)
 {
-	struct iir c;
-	iir_init(&c, sigma / dy);
-	int p = ny - 1;
-	size_t nb = ((size_t)nx + IIR_LANES - 1) / IIR_LANES;
-	size_t per = 3 * (size_t)(p + 2 * c.W) * IIR_LANES;
-	struct pass ps = {&c, f, nx, ny, p, 0, nb, (size_t)nx * (size_t)ny,
-			  xreallocarray(NULL, (size_t)par_threads() * per, sizeof(double))};
-	par_for((size_t)nz * nb, 1, pass_blocks, &ps);
-	free(ps.scratch);
+	iir_axis(f, nx, ny, nz, dy, sigma, 0);
 }
