@@ -307,13 +307,7 @@ struct spectrum *abbe_spectrum(const struct orders *o, const struct pupil *p,
 			par_for(ky, 8, rows, &jb);
 		}
 	}
-	struct spectrum *sp = xcalloc(1, sizeof *sp);
-	sp->lx = o->lx;
-	sp->ly = o->ly;
-	sp->mmax = o->mmax;
-	sp->nmax = o->nmax;
-	sp->nplanes = np;
-	sp->a = xcalloc(wd * ht * (size_t)np, sizeof *sp->a);
+	struct spectrum *sp = spectrum_new(o, np);
 	sp->pairs = nn;         /* source points, for the log line */
 	for (int l = 0; l < np; l++) {
 		const double *a = acc + (size_t)l * grid;

@@ -45,6 +45,21 @@ static double nice(double n)
 	return n * 1.1 + 8;
 }
 
+/* The orders (mask.c) inside the circle |f| <= fmax = NA/lambda + the
+ * largest source frequency, about pi fmax^2 Lx Ly plus the axes: M and N
+ * across, nrect in their rectangle; returns the count kept. */
+static double order_counts(const struct splat_input *in, const struct pupil *p,
+			  const struct source *s, double *M, double *N, double *nrect)
+{
+	const struct splat_mask *m = &in->mask;
+	double lx = m->xmax - m->xmin, ly = m->ymax - m->ymin;
+	double fm = (p->cutoff + s->smax) * (1 + 1e-9);
+	*M = floor(fm * lx);
+	*N = floor(fm * ly);
+	*nrect = (2 * *M + 1) * (2 * *N + 1);
+	return fmin(*nrect, M_PI * fm * fm * lx * ly + 2 * (*M + *N) + 1);
+}
+
 void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *seconds,
 			 double *bytes)
 {
@@ -53,11 +68,7 @@ void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *se
 	pupil_init(&p, in);
 	source_init(&s, in, p.cutoff);
 	const struct splat_mask *m = &in->mask;
-	double lx = m->xmax - m->xmin, ly = m->ymax - m->ymin;
-	double fm = (p.cutoff + s.smax) * (1 + 1e-9);
-	double M = floor(fm * lx), N = floor(fm * ly);
-	double nrect = (2 * M + 1) * (2 * N + 1);
-	double n = fmin(nrect, M_PI * fm * fm * lx * ly + 2 * (M + N) + 1);
+	double M, N, nrect, n = order_counts(in, &p, &s, &M, &N, &nrect);
 	double h = abbe_cell_default(&p, &s), ns = 0;
 	if (s.coherent)
 		ns = 1;
@@ -101,10 +112,7 @@ void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 	quad_default(&p, &nouter, &ninner);
 	const struct splat_mask *m = &in->mask;
 	double lx = m->xmax - m->xmin, ly = m->ymax - m->ymin;
-	double fm = (p.cutoff + s.smax) * (1 + 1e-9);
-	double M = floor(fm * lx), N = floor(fm * ly);
-	double nrect = (2 * M + 1) * (2 * N + 1);
-	double n = fmin(nrect, M_PI * fm * fm * lx * ly + 2 * (M + N) + 1);
+	double M, N, nrect, n = order_counts(in, &p, &s, &M, &N, &nrect);
 	double tried = n * (n + 1) / 2;
 	double r2 = 2 * p.cutoff;
 	double near = fmin(n, M_PI * r2 * r2 * lx * ly + 2 * (r2 * lx + r2 * ly) + 1);

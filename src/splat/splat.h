@@ -129,6 +129,8 @@ struct spectrum spectrum_plane(const struct spectrum *sp, int k);
  * the source passes the pupil. */
 struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 			      const struct source *s, const struct quad *q);
+/* A zero spectrum of np planes for orders o (|dm| <= 2 mmax, |dn| <= 2 nmax). */
+struct spectrum *spectrum_new(const struct orders *o, int np);
 void spectrum_free(struct spectrum *sp);
 /* 0: tcc_spectrum prints a progress line on long runs (progress.h);
  * splat's main sets it from -q, the tests leave it 1. */

@@ -117,13 +117,7 @@ struct spectrum *tcc_spectrum(const struct orders *o, const struct pupil *p,
 		    "in the resist statement, or a smaller window", np, bytes / 1e9,
 		    STACK_SPECTRA_MAX / 1e9);
 	}
-	struct spectrum *sp = xcalloc(1, sizeof *sp);
-	sp->lx = o->lx;
-	sp->ly = o->ly;
-	sp->mmax = o->mmax;
-	sp->nmax = o->nmax;
-	sp->nplanes = np;
-	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
+	struct spectrum *sp = spectrum_new(o, np);
 	int nt = par_threads();
 	double complex **scratch = xreallocarray(NULL, (size_t)nt, sizeof *scratch);
 	for (int k = 0; k < nt; k++)
@@ -176,6 +170,19 @@ struct spectrum spectrum_plane(const struct spectrum *sp, int k)
 	v.a = sp->a + (size_t)k * (4 * (size_t)sp->mmax + 1) * (4 * (size_t)sp->nmax + 1);
 	v.nplanes = 1;
 	return v;
+}
+
+struct spectrum *spectrum_new(const struct orders *o, int np)
+{
+	struct spectrum *sp = xcalloc(1, sizeof *sp);
+	sp->lx = o->lx;
+	sp->ly = o->ly;
+	sp->mmax = o->mmax;
+	sp->nmax = o->nmax;
+	sp->nplanes = np;
+	size_t w = 4 * (size_t)o->mmax + 1, h = 4 * (size_t)o->nmax + 1;
+	sp->a = xcalloc(w * h * (size_t)np, sizeof *sp->a);
+	return sp;
 }
 
 void spectrum_free(struct spectrum *sp)
