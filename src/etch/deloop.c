@@ -189,6 +189,22 @@ static int item_apart(const double *lo, const double *hi, const struct gitem *b)
 	       lo[0] > b->hi[0] || lo[1] > b->hi[1] || lo[2] > b->hi[2];
 }
 
+/* The grid item of triangle t with box [lo, hi], rounded outward to
+ * float so that it still contains the box. */
+static struct gitem item_of(int t, const double *lo, const double *hi)
+{
+	struct gitem it = {{0}, {0}, t};
+	for (int d = 0; d < 3; d++) {
+		it.lo[d] = (float)lo[d];
+		if ((double)it.lo[d] > lo[d])
+			it.lo[d] = nextafterf(it.lo[d], -INFINITY);
+		it.hi[d] = (float)hi[d];
+		if ((double)it.hi[d] < hi[d])
+			it.hi[d] = nextafterf(it.hi[d], INFINITY);
+	}
+	return it;
+}
+
 struct grid {
 	double lo[3], h;
 	long n[3];              /* cells per axis (the mesh's box over h) */
@@ -214,6 +230,15 @@ static void cell_range(const struct grid *g, const double *lo, const double *hi,
 		c0[d] = a < 0 ? 0 : a >= g->n[d] ? g->n[d] - 1 : (long)a;
 		c1[d] = b < 0 ? 0 : b >= g->n[d] ? g->n[d] - 1 : (long)b;
 	}
+}
+
+/* The number of cells the box [lo, hi] touches. */
+static double box_cells(const struct grid *g, const double *lo, const double *hi)
+{
+	long c0[3], c1[3];
+	cell_range(g, lo, hi, c0, c1);
+	return (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+	       (double)(c1[2] - c0[2] + 1);
 }
 
 static long long cell_key(const struct grid *g, long i, long j, long k)
@@ -271,11 +296,8 @@ static void count_range(void *ctx, size_t lo, size_t hi, int w)
 		if (!j->m->tri[t].alive)
 			continue;
 		double blo[3], bhi[3];
-		long c0[3], c1[3];
 		tri_box(j->m, (int)t, blo, bhi);
-		cell_range(j->g, blo, bhi, c0, c1);
-		j->cnt[t] = (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
-			    (double)(c1[2] - c0[2] + 1);
+		j->cnt[t] = box_cells(j->g, blo, bhi);
 	}
 }
 
@@ -289,15 +311,7 @@ static void fill_range(void *ctx, size_t lo, size_t hi, int w)
 		double blo[3], bhi[3];
 		long c0[3], c1[3];
 		tri_box(j->m, (int)t, blo, bhi);
-		struct gitem it = {{0}, {0}, (int)t};
-		for (int d = 0; d < 3; d++) {
-			it.lo[d] = (float)blo[d];
-			if ((double)it.lo[d] > blo[d])
-				it.lo[d] = nextafterf(it.lo[d], -INFINITY);
-			it.hi[d] = (float)bhi[d];
-			if ((double)it.hi[d] < bhi[d])
-				it.hi[d] = nextafterf(it.hi[d], INFINITY);
-		}
+		struct gitem it = item_of((int)t, blo, bhi);
 		cell_range(j->g, blo, bhi, c0, c1);
 		size_t e = j->off[t];
 		for (long k = c0[2]; k <= c1[2]; k++)
@@ -802,21 +816,15 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 			if (!dt[t])
 				continue;
 			double blo[3], bhi[3];
-			long c0[3], c1[3];
 			tri_box(m, (int)t, blo, bhi);
-			cell_range(&g, blo, bhi, c0, c1);
-			de += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
-			      (double)(c1[2] - c0[2] + 1);
+			de += box_cells(&g, blo, bhi);
 		}
 		for (size_t s = 0; s < m->nseg; s++) {
 			if (!ds[s])
 				continue;
 			double blo[3], bhi[3];
-			long c0[3], c1[3];
 			seg_box(m, (int)s, blo, bhi);
-			cell_range(&g, blo, bhi, c0, c1);
-			de += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
-			      (double)(c1[2] - c0[2] + 1);
+			de += box_cells(&g, blo, bhi);
 		}
 		if (de <= GRID_ENTRIES_PER_TRI * (double)(nds + ndt) + 64)
 			break;
@@ -867,15 +875,7 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 			    blo[1] > uhi[1] || blo[2] > uhi[2])
 				continue;
 			cell_range(&g, blo, bhi, c0, c1);
-			struct gitem it = {{0}, {0}, (int)t};
-			for (int d = 0; d < 3; d++) {
-				it.lo[d] = (float)blo[d];
-				if ((double)it.lo[d] > blo[d])
-					it.lo[d] = nextafterf(it.lo[d], -INFINITY);
-				it.hi[d] = (float)bhi[d];
-				if ((double)it.hi[d] < bhi[d])
-					it.hi[d] = nextafterf(it.hi[d], INFINITY);
-			}
+			struct gitem it = item_of((int)t, blo, bhi);
 			for (long k = c0[2]; k <= c1[2]; k++)
 				for (long j = c0[1]; j <= c1[1]; j++)
 					for (long i = c0[0]; i <= c1[0]; i++) {
