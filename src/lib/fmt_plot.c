@@ -6,8 +6,10 @@
 #include "par.h"
 #include "util.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 struct plot_file *fmt_plot_new(int dim)
 {
@@ -40,6 +42,64 @@ void fmt_plot_add_curve(struct plot_file *pf, struct plot_set *s, int npts,
 static const char *bound_names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
 static const char *coord_names[3] = {"x", "y", "z"};
 
+/* Numbers in a sample of text: runs of characters that are neither
+ * white space nor commas, outside '#' lines. */
+static double count_numbers(const char *b, size_t n)
+{
+	double count = 0;
+	int in = 0, comment = 0;
+	for (size_t i = 0; i < n; i++) {
+		char ch = b[i];
+		if (ch == '\n') {
+			comment = 0, in = 0;
+			continue;
+		}
+		if (comment)
+			continue;
+		if (ch == '#' && !in) {
+			comment = 1;
+			continue;
+		}
+		int sep = ch == ' ' || ch == '\t' || ch == '\r' || ch == ',';
+		if (!sep && !in)
+			count++;
+		in = !sep;
+	}
+	return count;
+}
+
+static int ends_in(const char *s, const char *suffix)
+{
+	size_t n = strlen(s), m = strlen(suffix);
+	return n > m && strcmp(s + n - m, suffix) == 0;
+}
+
+int fmt_plot_size(const char *path, double *text, double *numbers)
+{
+	*text = *numbers = 0;
+	struct stat st;
+	if (strcmp(path, "-") == 0 || stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+		return 0;
+	double size = (double)st.st_size;
+	if (ends_in(path, ".gz") || ends_in(path, ".Z")) {
+		/* a triangle file's density: about 21 bytes a number */
+		*text = size * PLOT_GZ_RATIO;
+		*numbers = *text / 21;
+		return 1;
+	}
+	*text = size;
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return 1;       /* the reader will say why */
+	static char buf[PLOT_SAMPLE];
+	size_t n = fread(buf, 1, sizeof buf, f);
+	fclose(f);
+	if (n == 0)
+		return 1;
+	*numbers = count_numbers(buf, n) * (size / (double)n);
+	return 1;
+}
+
 struct plot_file *fmt_plot_read(const char *path, int dim)
 {
 	struct lex *lx = lex_open(path);
@@ -56,23 +116,44 @@ struct plot_file *fmt_plot_read(const char *path, int dim)
 		}
 		struct plot_set *s = fmt_plot_add_set(pf, b);
 		long nc = lex_count(lx, "ncurves", 0, PLOT_MAX_COUNT);
+		/* the points of all curves of the set go to one block (a
+		 * triangle is 96 bytes, not a block of its own with its
+		 * allocation slack); it grows as points arrive, never by the
+		 * claimed counts, and the curves point into it once complete */
+		size_t cap = 0, n = 0;
+		double *pool = NULL;
 		for (long c = 0; c < nc; c++) {
 			long np = lex_count(lx, "npts", 0, PLOT_MAX_COUNT);
-			/* grow as points arrive, never by the claimed count */
-			size_t cap = 0, n = 0, want = ck_mul((size_t)np, (size_t)dim, "plot points");
-			double *p = NULL;
+			size_t want = ck_add(n, ck_mul((size_t)np, (size_t)dim, "plot points"),
+					     "plot points");
+			size_t first = n;
 			while (n < want) {
 				double v = lex_numberf(lx, "%s of point %zu of curve %ld",
-						       coord_names[n % (size_t)dim],
-						       n / (size_t)dim + 1, c + 1);
-				xgrow(&p, &cap, n + 1, sizeof *p);
-				p[n++] = v;
+						       coord_names[(n - first) % (size_t)dim],
+						       (n - first) / (size_t)dim + 1, c + 1);
+				xgrow(&pool, &cap, n + 1, sizeof *pool);
+				pool[n++] = v;
 			}
 			xgrow(&s->curves, &s->cap, (size_t)s->ncurves + 1, sizeof *s->curves);
 			s->curves[s->ncurves].npts = (int)np;
-			s->curves[s->ncurves].p = p;
+			s->curves[s->ncurves].p = NULL;
 			s->ncurves++;
 		}
+		if (n) {
+			pool = xreallocarray(pool, n, sizeof *pool);   /* no slack */
+			s->pool = pool;
+			s->npooled = s->ncurves;
+			size_t at = 0;
+			for (int c = 0; c < s->ncurves; c++) {
+				s->curves[c].p = pool + at;
+				at += (size_t)s->curves[c].npts * (size_t)dim;
+			}
+		} else {
+			free(pool);
+		}
+		if (s->ncurves)
+			s->curves = xreallocarray(s->curves, (size_t)s->ncurves, sizeof *s->curves);
+		s->cap = (size_t)s->ncurves;
 	}
 	lex_close(lx);
 	return pf;
@@ -219,8 +300,9 @@ void fmt_plot_free(struct plot_file *pf)
 	if (!pf)
 		return;
 	for (int s = 0; s < pf->nsets; s++) {
-		for (int c = 0; c < pf->sets[s].ncurves; c++)
+		for (int c = pf->sets[s].npooled; c < pf->sets[s].ncurves; c++)
 			free(pf->sets[s].curves[c].p);
+		free(pf->sets[s].pool);
 		free(pf->sets[s].curves);
 	}
 	free(pf->sets);

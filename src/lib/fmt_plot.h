@@ -34,6 +34,10 @@ struct plot_set {
 	int ncurves;
 	struct plot_curve *curves;
 	size_t cap;         /* allocated curves */
+	double *pool;       /* fmt_plot_read: the points of the first npooled
+			     * curves, one block their p point into; curves
+			     * added later (fmt_plot_add_curve) own theirs */
+	int npooled;
 };
 
 struct plot_file {
@@ -52,6 +56,14 @@ struct plot_set *fmt_plot_add_set(struct plot_file *pf, const double *bounds);
 /* Appends a curve of npts points (copied from p, npts*dim values). */
 void fmt_plot_add_curve(struct plot_file *pf, struct plot_set *s, int npts,
 			const double *p);
+/* The size of a plot file before it is read, for a reader's estimate of
+ * its memory and time (budget.h): *text the bytes of its text (a
+ * compressed file counts PLOT_GZ_RATIO times its size), *numbers the
+ * numbers it holds, from the density of its first PLOT_SAMPLE bytes.
+ * Returns 0 (and zeros) when the size is unknown: stdin, a pipe. */
+#define PLOT_GZ_RATIO 4.0
+#define PLOT_SAMPLE 65536
+int fmt_plot_size(const char *path, double *text, double *numbers);
 /* Reads a 2D (dim 2) or 3D (dim 3) plot file. */
 struct plot_file *fmt_plot_read(const char *path, int dim);
 void fmt_plot_write(const char *path, const struct plot_file *pf);

@@ -34,7 +34,7 @@
 static const char usage_head[] =
 	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e]\n"
 	"             [-zs factor|auto] [-times t1,t2,...] [-h [-walls] [-shade]]\n"
-	"             [-nosort] [-noplot] [-print] [-ps] [-tl toplabel] [-xl xlabel]\n"
+	"             [-nosort] [-noplot] [-print] [-ps] [-big] [-tl toplabel] [-xl xlabel]\n"
 	"             [-yl ylabel] [-zl zlabel] [-svg file] [X options] plotfile...\n"
 	"  -v vx vy vz      eye position (view vector), default -1 -2 1.5\n"
 	"  -e               unequal axis scales (the bounding box becomes a cube)\n"
@@ -46,6 +46,8 @@ static const char usage_head[] =
 	"                   the box floor, so a resist surface looks a solid block\n"
 	"  -shade           with -h: grey polygons lit from the upper left, no mesh lines\n"
 	"  -nosort          with -h: paint the polygons in file order\n"
+	"  -big             draw plot files whose estimated memory or time (from\n"
+	"                   their size) is beyond the limits (also SAMPLE3D_BIG=1)\n"
 	"  -zl zlabel       z label\n"
 	"  --help           this text (-h is hidden lines, as in the guide)\n"
 	"  keys in the X11 window: h/l turn sideways, j/k up/down, a/d/s/f turn by\n"
@@ -107,6 +109,17 @@ struct ctx {
 	const struct plot_set **sets;
 };
 
+/* The estimate before reading (plot_budget): the peak bytes and the
+ * seconds per number of the plot files, measured on the contact example's
+ * unbaked curves.plot (26 MB, 1.27 M numbers, 105642 triangles, one core):
+ * -h holds the numbers, the painter's fragments and the display list
+ * (105 MB, 0.64 s); without -h (or -nosort) the numbers and the list
+ * (39 MB with the text, 0.16 s). */
+#define B_HIDDEN 90.0
+#define T_HIDDEN 6e-7
+#define B_LINES 32.0
+#define T_LINES 1.5e-7
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
@@ -143,7 +156,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_str(&a, "-times", &o->times)) ;
 		else if (args_flag(&a, "-h")) o->hidden = 1;
 		else if (args_flag(&a, "-nosort")) o->nosort = 1;
-		else if (plot_cmd_arg(&a, &o->cmd, PC_ZLABEL | PC_XDISPLAY)) ;
+		else if (plot_cmd_arg(&a, &o->cmd, PC_ZLABEL | PC_XDISPLAY | PC_BIG)) ;
 		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
 		else o->files[o->nfiles++] = argv[a.i++];
 	}
@@ -421,33 +434,34 @@ static void axes(struct draw *d, const struct view *vw, const double *box, const
 struct frag {
 	int n;              /* vertices (2 for a segment) */
 	int curve;          /* the curve it comes from (its line style) */
-	int seg;            /* an open-curve segment: never a splitter */
+	unsigned char seg;  /* an open-curve segment: never a splitter */
+	unsigned char hasplane;
 	double gray;        /* fill: 1 white (the surface), less for walls */
-	int hasplane;
 	double pl[4];       /* plane n.p + d = 0, |n| = 1 (view coordinates) */
-	double *p;          /* 3n view coordinates */
 	unsigned char *orig;/* edge i (i -> i+1) is part of an original edge */
+	double p[];         /* 3n view coordinates; orig follows them */
 };
 
+/* One allocation a fragment (a triangle is 144 bytes, not three blocks):
+ * the painter holds every polygon of a page at once. */
 static struct frag *frag_new(int n, int curve, int seg)
 {
-	struct frag *f = xcalloc(1, sizeof *f);
+	size_t np = (size_t)n * 3 * sizeof(double);
+	struct frag *f = xmalloc(sizeof *f + np + (size_t)n);
 	f->n = n;
 	f->curve = curve;
-	f->seg = seg;
+	f->seg = (unsigned char)seg;
+	f->hasplane = 0;
 	f->gray = 1.0;
-	f->p = xreallocarray(NULL, (size_t)n, 3 * sizeof *f->p);
-	f->orig = xcalloc((size_t)n, 1);
+	memset(f->pl, 0, sizeof f->pl);
+	f->orig = (unsigned char *)f->p + np;
+	memset(f->orig, 0, (size_t)n);
 	return f;
 }
 
 static void frag_free(struct frag *f)
 {
-	if (f) {
-		free(f->p);
-		free(f->orig);
-		free(f);
-	}
+	free(f);
 }
 
 /* Newell's normal: robust for any planar polygon. */
@@ -936,6 +950,10 @@ int main(int argc, char **argv)
 	memcpy(c.v0, o.has_v ? o.v : DEFAULT_VIEW, sizeof c.v0);
 	memcpy(c.v, c.v0, sizeof c.v);
 
+	if (c.hidden && !c.nosort)
+		plot_budget(o.nfiles, o.files, B_HIDDEN, T_HIDDEN);
+	else
+		plot_budget(o.nfiles, o.files, B_LINES, T_LINES);
 	struct plot_file **pf = xcalloc((size_t)o.nfiles, sizeof *pf);
 	for (int i = 0; i < o.nfiles; i++) {
 		pf[i] = fmt_plot_read(o.files[i], 3);

@@ -7,9 +7,12 @@
  * scripts never block.
  */
 #include "plot_common.h"
+#include "budget.h"
+#include "fmt_plot.h"
 #include "util.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,6 +91,10 @@ int plot_cmd_arg(struct args *a, struct plot_cmd *c, unsigned flags)
 	if (args_str(a, "-svg", &c->svg) || args_str(a, "-tl", &c->tl) ||
 	    args_str(a, "-xl", &c->xl) || args_str(a, "-yl", &c->yl))
 		return 1;
+	if ((flags & PC_BIG) && args_flag(a, "-big")) {
+		budget_allow_big();
+		return 1;
+	}
 	if ((flags & PC_ZLABEL) && args_str(a, "-zl", &c->zl))
 		return 1;
 	if ((flags & PC_LANDSCAPE) && args_flag(a, "-l")) {
@@ -274,6 +281,36 @@ void plot_output(const struct plot_settings *s, const struct plot_cmd *c,
 		print_ps(s->printer, s->psfile);
 	else if (s->printplot)
 		die("-print needs the PostScript plot, which -ps or POSTSCRIPT=OFF turned off");
+}
+
+/* Reading holds a file's text and its numbers (8 bytes each, up to
+ * twice that while the block grows) at once; the text is freed before
+ * drawing. */
+#define READ_BYTES_PER_NUMBER 16.0
+
+void plot_budget(int nfiles, char *const *files, double bytes_per_number,
+		 double seconds_per_number)
+{
+	double text_max = 0, text_sum = 0, numbers = 0;
+	const char *largest = NULL;
+	for (int i = 0; i < nfiles; i++) {
+		double t, n;
+		if (!fmt_plot_size(files[i], &t, &n))
+			continue;
+		if (!largest || t > text_max)
+			largest = files[i], text_max = t;
+		text_sum += t;
+		numbers += n;
+	}
+	if (!largest)
+		return;
+	double bytes = fmax(text_max + numbers * READ_BYTES_PER_NUMBER,
+			    numbers * bytes_per_number);
+	char what[96], b[16];
+	snprintf(what, sizeof what, "%s%.2g plot numbers (%s of text)",
+		 nfiles > 1 ? "with the other files, " : "", numbers,
+		 budget_bytes(b, text_sum));
+	budget_check(largest, what, numbers * seconds_per_number, bytes);
 }
 
 /* One label: the file's if neither the options-file nor the command line

@@ -20,7 +20,8 @@
 enum {
 	PC_ZLABEL = 1,      /* -zl (pdraw) */
 	PC_LANDSCAPE = 2,   /* -l is landscape (drawplot, drawmask) */
-	PC_XDISPLAY = 4     /* host:display, -d (contour, drawplot) */
+	PC_XDISPLAY = 4,    /* host:display, -d (contour, drawplot) */
+	PC_BIG = 8          /* -big: read plot files beyond the estimate's limits */
 };
 
 /* The command line's common options. */
@@ -78,6 +79,15 @@ void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
 void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
 			  const struct opt_spec *spec, const struct opt_value *val,
 			  const struct plot_cmd *c);
+
+/* Before reading plot files: their memory and time estimated from their
+ * size (fmt_plot_size) - the text of the largest file, or per number
+ * read the bytes and seconds of all files - checked against the limits
+ * (budget.h); beyond them the program stops with one line naming the
+ * estimate and -big.  bytes_per_number and seconds_per_number are the
+ * program's measured costs (beside its call). */
+void plot_budget(int nfiles, char *const *files, double bytes_per_number,
+		 double seconds_per_number);
 
 /* Builds the picture; called again after a key changes the view. */
 typedef struct draw *(*plot_render)(void *ctx);
