@@ -188,12 +188,12 @@ static void coord_ref(char *buf, size_t size, double v)
  * nearest N / 100 is far closer to it than the 0.005 to a rounding edge. */
 #define COORD_INT_MAX 1e15
 
-void draw_coord_text(char *buf, size_t size, double v)
+size_t draw_coord_text(char *buf, size_t size, double v)
 {
 	double n = round(v * 100);
 	if (!(fabs(n) < COORD_INT_MAX) || size < 24) {
 		coord_ref(buf, size, v);
-		return;
+		return strlen(buf);
 	}
 	long long q = (long long)fabs(n);
 	char *p = buf;
@@ -216,6 +216,7 @@ void draw_coord_text(char *buf, size_t size, double v)
 			*p++ = (char)('0' + c % 10);
 	}
 	*p = '\0';
+	return (size_t)(p - buf);
 }
 
 void draw_print_coord(FILE *f, double v)

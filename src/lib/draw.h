@@ -90,8 +90,9 @@ void draw_write_svg(const struct draw *d, const char *path);
  * 0.01 pt, trailing zeros dropped, never "-0", so output is the same
  * everywhere. */
 void draw_print_coord(FILE *f, double v);
-/* The same text into buf (size bytes, at least 24 for the fast path). */
-void draw_coord_text(char *buf, size_t size, double v);
+/* The same text into buf (size bytes, at least 24 for the fast path);
+ * returns its length. */
+size_t draw_coord_text(char *buf, size_t size, double v);
 
 /* Dash pattern of a line type: fills dash[] (points), returns its length. */
 int draw_dash(int linetype, double dash[6]);

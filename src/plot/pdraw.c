@@ -531,6 +531,14 @@ static struct frag *clip_part(const struct frag *f, const double *pl, const int 
 
 struct list { struct frag **f; size_t n, cap; };
 
+static void list_reserve(struct list *l, size_t n)
+{
+	if (n) {
+		l->f = xreallocarray(NULL, n, sizeof *l->f);
+		l->cap = n;
+	}
+}
+
 static void list_add(struct list *l, struct frag *f)
 {
 	xgrow(&l->f, &l->cap, l->n + 1, sizeof *l->f);
@@ -556,20 +564,32 @@ static int count_splits(const struct frag *s, struct frag *const *f, size_t n)
 }
 
 /* The splitter: of a few candidates spread over the list, the one that
- * splits the fewest of a sample (fewer pieces, same picture). */
+ * splits the fewest of a sample (fewer pieces, same picture).  A
+ * candidate met twice (short lists) is counted once, a lone candidate not
+ * at all, and none can beat one that splits nothing: the choice is the
+ * same, most nodes of the partition being short lists. */
 static long choose(struct frag *const *f, size_t n)
 {
-	long best = -1;
-	int bests = 0;
+	size_t cand[5];
+	int nc = 0;
 	for (int c = 0; c < 5; c++) {
 		size_t i = n * (size_t)c / 5;
 		while (i < n && !f[i]->hasplane)
 			i++;
 		if (i >= n)
 			continue;
-		int s = count_splits(f[i], f, n);
+		if (nc && cand[nc - 1] == i)
+			continue;       /* candidates only grow: a repeat is the last */
+		cand[nc++] = i;
+	}
+	if (nc <= 1)
+		return nc ? (long)cand[0] : -1;
+	long best = -1;
+	int bests = 0;
+	for (int c = 0; c < nc && !(best >= 0 && bests == 0); c++) {
+		int s = count_splits(f[cand[c]], f, n);
 		if (best < 0 || s < bests)
-			best = (long)i, bests = s;
+			best = (long)cand[c], bests = s;
 	}
 	return best;
 }
@@ -582,6 +602,8 @@ static void painter(struct draw *d, const struct view *vw, const struct ctx *c,
 {
 	struct work *stack = NULL;
 	size_t ns = 0, cap = 0;
+	unsigned char *cls = NULL;      /* a list's sides of the splitter */
+	size_t clscap = 0;
 	xgrow(&stack, &cap, 1, sizeof *stack);
 	stack[ns++] = (struct work){0, all};
 	while (ns > 0) {
@@ -601,25 +623,36 @@ static void painter(struct draw *d, const struct view *vw, const struct ctx *c,
 		struct list pos = {0}, neg = {0}, co = {0};
 		int *sd = NULL;
 		size_t sdcap = 0;
+		/* sides first, so that the lists are allocated once at their
+		 * size (0 on the plane, 1 in front, 2 behind, 3 split) */
+		xgrow(&cls, &clscap, w.l.n, 1);
+		size_t count[4] = {0, 0, 0, 0};
+		for (size_t i = 0; i < w.l.n; i++) {
+			const struct frag *f = w.l.f[i];
+			int p = 0, q = 0;
+			if ((long)i != si)
+				for (int k = 0; k < f->n; k++) {
+					int v = side(s->pl, f->p + 3 * k);
+					p |= v > 0, q |= v < 0;
+				}
+			cls[i] = (unsigned char)(p | q << 1);
+			count[cls[i]]++;
+		}
+		list_reserve(&co, count[0]);
+		list_reserve(&pos, count[1] + count[3]);
+		list_reserve(&neg, count[2] + count[3]);
 		for (size_t i = 0; i < w.l.n; i++) {
 			struct frag *f = w.l.f[i];
-			if ((long)i == si) {
+			if (cls[i] == 0)
 				list_add(&co, f);
-				continue;
-			}
-			xgrow(&sd, &sdcap, (size_t)f->n, sizeof *sd);
-			int p = 0, q = 0;
-			for (int k = 0; k < f->n; k++) {
-				sd[k] = side(s->pl, f->p + 3 * k);
-				p |= sd[k] > 0, q |= sd[k] < 0;
-			}
-			if (!p && !q)
-				list_add(&co, f);
-			else if (!q)
+			else if (cls[i] == 1)
 				list_add(&pos, f);
-			else if (!p)
+			else if (cls[i] == 2)
 				list_add(&neg, f);
 			else {
+				xgrow(&sd, &sdcap, (size_t)f->n, sizeof *sd);
+				for (int k = 0; k < f->n; k++)
+					sd[k] = side(s->pl, f->p + 3 * k);
 				struct frag *a = clip_part(f, s->pl, sd, 1);
 				struct frag *b = clip_part(f, s->pl, sd, -1);
 				if (a) list_add(&pos, a);
@@ -638,6 +671,7 @@ static void painter(struct draw *d, const struct view *vw, const struct ctx *c,
 		stack[ns++] = (struct work){0, farl};
 	}
 	free(stack);
+	free(cls);
 }
 
 /* ---- drawing ---- */
