@@ -103,10 +103,37 @@ static int overstretches(const struct mesh *m, int s, int del, double smax)
 	return 0;
 }
 
+/* The largest square whose sqrt is at most s, and the smallest whose sqrt
+ * is at least s (sqrt is correctly rounded and monotone): a squared length
+ * compared with these decides as its sqrt would against s. */
+static double square_at_most(double s)
+{
+	double x = s * s;
+	while (x > 0 && sqrt(x) > s)
+		x = nextafter(x, 0);
+	while (sqrt(nextafter(x, INFINITY)) <= s)
+		x = nextafter(x, INFINITY);
+	return x;
+}
+
+static double square_at_least(double s)
+{
+	double x = s * s;
+	while (sqrt(x) < s)
+		x = nextafter(x, INFINITY);
+	while (x > 0 && sqrt(nextafter(x, 0)) >= s)
+		x = nextafter(x, 0);
+	return x;
+}
+
 void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 		 const struct etch_opts *o, struct etch_stats *st)
 {
 	double smax = o->smax * seg, smin = o->smin * seg;
+	/* most triangles need neither a cut nor a merge: their squared
+	 * lengths say so without the three square roots */
+	int quick = isfinite(smax) && isfinite(smin) && smax > 0 && smin > 0 && smin < smax;
+	double qmax = quick ? square_at_most(smax) : 0, qmin = quick ? square_at_least(smin) : 0;
 	long limit = (long)(OPS_PER_TRI * m->live_tri) + 64, ops = 0;
 	for (size_t t = 0; t < m->ntri && ops < limit; t++) {
 		const struct triangle *tr = &m->tri[t];
@@ -118,10 +145,18 @@ void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 		 * triangle's own nodes, without the segment array's indirection
 		 * (the same value as mesh_seg_length: only signs differ) */
 		const double *q[3] = {m->node[tr->n[0]].p, m->node[tr->n[1]].p, m->node[tr->n[2]].p};
+		double sq[3];
+		int inside = quick;
 		for (int j = 0; j < 3; j++) {
 			const double *a = q[j], *b = q[j == 2 ? 0 : j + 1];
 			double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
-			len[j] = sqrt(dx * dx + dy * dy + dz * dz);
+			sq[j] = dx * dx + dy * dy + dz * dz;
+			inside &= sq[j] <= qmax && sq[j] >= qmin;      /* false for NaN */
+		}
+		if (inside)
+			continue;
+		for (int j = 0; j < 3; j++) {
+			len[j] = sqrt(sq[j]);
 			if (len[j] > len[hi]) hi = j;
 			if (len[j] < len[lo]) lo = j;
 		}
