@@ -4,7 +4,11 @@
 #   pdraw -h on a 201 x 201 grid as triangles (80000 polygons, BSP painter);
 #   pdraw without -h on the same file;
 #   contour of a 501 x 501 grid at about ten levels;
-#   drawplot of 10 curves of 10000 points.
+#   drawplot of 10 curves of 10000 points;
+#   memory: peak resident bytes per triangle of pdraw with and without -h,
+#   and of conv -vtk, on a 501 x 501 grid as triangles (500000), beside
+#   the estimate the programs check before reading (plot_budget: their
+#   refusal at the machine's memory rests on it).
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
@@ -45,3 +49,22 @@ run "pdraw -h, 201x201 grid (80000 triangles)" "$B/pdraw" -h g201.3D
 run "pdraw, 201x201 grid (80000 triangles)" "$B/pdraw" g201.3D
 run "contour, 501x501 grid, ~10 levels" "$B/contour" g501.cont
 run "drawplot, 10 curves x 10000 points" "$B/drawplot" c.2D
+
+# memory per triangle, measured against the estimate
+"$B/conv" -t -o g501.3D g501.cont || exit 1
+ntri=$(awk 'NF == 1 && $1 == 4 { n++ } END { print n }' g501.3D)
+mem() { # NAME BYTES-PER-NUMBER CMD...: peak RSS against the estimate
+	name=$1 per=$2
+	shift 2
+	if [ ! -x /usr/bin/time ]; then echo "plot: $name: /usr/bin/time missing"; return; fi
+	POSTSCRIPT=ON /usr/bin/time -f '%M' -o mem.out "$@" </dev/null >/dev/null 2>&1 ||
+		{ echo "plot: $name: failed"; return; }
+	awk -v n="$name" -v kb="$(cat mem.out)" -v t="$ntri" -v per="$per" \
+		-v text="$(wc -c <g501.3D)" -v nums="$(awk 'NF == 3 { n += 3 } END { print n }' g501.3D)" 'BEGIN {
+		e = text + 16 * nums; if (per * nums > e) e = per * nums
+		printf "plot: %s: %.0f MB peak, %.0f bytes a triangle (estimate %.0f MB)\n",
+			n, kb / 1024, kb * 1024 / t, e / 1e6 }'
+}
+mem "pdraw -h, 501x501 grid as triangles" 90 "$B/pdraw" -h -noplot g501.3D
+mem "pdraw, 501x501 grid as triangles" 32 "$B/pdraw" -noplot g501.3D
+mem "conv -vtk, 501x501 grid as triangles" 32 "$B/conv" -vtk -o g501.vtp g501.3D
