@@ -30,14 +30,16 @@ enum { DRAW_BOTTOM = -1, DRAW_MIDDLE = 0, DRAW_TOP = 1 };      /* valign */
 
 enum draw_kind { DRAW_LINE, DRAW_POLY, DRAW_TEXT, DRAW_CLIP, DRAW_UNCLIP };
 
+/* The ints side by side: 80 bytes, not 96 (a list holds two items a
+ * triangle for pdraw -h). */
 struct draw_item {
 	enum draw_kind kind;
 	int page;
 	int linetype;       /* stroke dash pattern, 0 = no stroke */
+	int n;              /* points */
 	double width;       /* stroke width, points */
 	double gray;        /* stroke (or text) gray, 0 black .. 1 white */
 	double fill;        /* DRAW_POLY: fill gray or DRAW_NOFILL */
-	int n;              /* points */
 	double *xy;         /* 2n coordinates; DRAW_CLIP: x0 y0 x1 y1 */
 	char *text;         /* DRAW_TEXT, at xy[0], xy[1] */
 	double size, angle; /* text size in points, angle in degrees */
