@@ -17,12 +17,29 @@ static int big_env(void)
 	return e && *e && strcmp(e, "0") != 0;
 }
 
-double budget_memory(void)
+static double machine_memory(void)
 {
 	long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
 	if (pages <= 0 || size <= 0)
 		return 4e9;   /* unknown: assume a small machine */
 	return (double)pages * (double)size;
+}
+
+/* SAMPLE3D_MEMORY as a byte count, 0 if unset or not a positive number. */
+static double memory_env(void)
+{
+	const char *e = getenv("SAMPLE3D_MEMORY");
+	char *end;
+	if (!e || !*e)
+		return 0;
+	double v = strtod(e, &end);
+	return *end == '\0' && v > 0 && v < 1e300 ? v : 0;
+}
+
+double budget_memory(void)
+{
+	double m = machine_memory(), e = memory_env();
+	return e > 0 && e < m ? e : m;
 }
 
 const char *budget_bytes(char *buf, double b)
@@ -64,6 +81,7 @@ void budget_check(const char *where, const char *what, double seconds, double by
 		return;
 	}
 	die("%s: %s need about %s of work and %s of memory, beyond the limits "
-	    "(1 h of work, the %s of memory of this machine): use -big or "
-	    "SAMPLE3D_BIG=1 to run it anyway", where, what, t, b, m);
+	    "(1 h of work, the %s of memory %s): use -big or "
+	    "SAMPLE3D_BIG=1 to run it anyway", where, what, t, b, m,
+	    mem < machine_memory() ? "SAMPLE3D_MEMORY allows" : "of this machine");
 }
