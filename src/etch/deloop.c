@@ -368,6 +368,8 @@ static void tri_box(const struct mesh *m, const double (*P)[3], int t, double lo
 struct box_cache {
 	double (*tb)[6], (*sb)[6];      /* lo[3], hi[3] */
 	size_t nt, ns;
+	double (*P)[3];                 /* the node positions (node_positions) */
+	size_t np;
 };
 
 /* the grid's construction, by the threads over ranges of triangles */
@@ -752,7 +754,7 @@ static size_t pierces_geo(const struct mesh *m, struct deloop_pierce **out, stru
 	if (geo)
 		memset(geo, 0, sizeof *geo);
 	if (bc)
-		bc->nt = bc->ns = 0;
+		bc->nt = bc->ns = bc->np = 0;
 	if (m->ntri == 0)
 		return 0;
 	struct grid g;
@@ -827,7 +829,13 @@ static size_t pierces_geo(const struct mesh *m, struct deloop_pierce **out, stru
 	if (n > 1)
 		qsort(list, n, sizeof *list, cmp_pierce);
 	free(order);
-	free(P);
+	if (bc) {
+		free(bc->P);
+		bc->P = P;
+		bc->np = m->nnode;
+	} else {
+		free(P);
+	}
 	grid_free(&g);
 	*out = list;
 	return n;
@@ -1026,9 +1034,16 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 	/* the dirty nodes, segments and triangles */
 	unsigned char *dn = xcalloc(m->nnode + 1, 1), *ds = xcalloc(m->nseg + 1, 1),
 		      *dt = xcalloc(m->ntri + 1, 1);
-	for (size_t i = 0; i < m->nnode; i++)
+	/* and the node positions brought up to date (the others are as at
+	 * the last search, whose mesh sn is) */
+	bc->P = xreallocarray(bc->P, m->nnode + 1, sizeof *bc->P);
+	for (size_t i = 0; i < m->nnode; i++) {
 		dn[i] = i >= sn->nnode || !sn->node[i].alive ||
 			memcmp(sn->node[i].p, m->node[i].p, sizeof sn->node[i].p) != 0;
+		if (dn[i] || i >= bc->np)
+			memcpy(bc->P[i], m->node[i].p, sizeof bc->P[i]);
+	}
+	bc->np = m->nnode;
 	size_t nds = 0, ndt = 0;
 	for (size_t s = 0; s < m->nseg; s++) {
 		const struct segment *sg = &m->seg[s];
@@ -1064,8 +1079,7 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 		free(dt);
 		return pierces_geo(m, out, geo, bc);
 	}
-	double (*Pw)[3] = node_positions(m);
-	const double (*P)[3] = (const double (*)[3])Pw;
+	const double (*P)[3] = (const double (*)[3])bc->P;
 	box_cache_update(bc, m, P, ds, dt);
 	for (;;) {
 		double de = 0;
@@ -1205,7 +1219,6 @@ static size_t deloop_pierces_near(const struct mesh *m, const struct deloop_snap
 	free(start);
 	free(key);
 	free(g.item);
-	free(Pw);
 	/* and the previous ones between clean elements */
 	for (size_t k = 0; k < sn->np; k++) {
 		size_t s = (size_t)sn->pc[k].s, t = (size_t)sn->pc[k].t;
@@ -1684,6 +1697,7 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 	snap_free(&sn);
 	free(bc.tb);
 	free(bc.sb);
+	free(bc.P);
 	free(seam);
 	rep->open_left = deloop_open_length(m);
 }
