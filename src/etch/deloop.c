@@ -381,8 +381,8 @@ static void tri_box(const struct mesh *m, const double (*P)[3], int t, double lo
 		lo[d] = hi[d] = P[tr->n[0]][d];
 		for (int j = 1; j < 3; j++) {
 			double v = P[tr->n[j]][d];
-			lo[d] = fmin(lo[d], v);
-			hi[d] = fmax(hi[d], v);
+			lo[d] = v < lo[d] ? v : lo[d];     /* fmin, fmax: calls */
+			hi[d] = v > hi[d] ? v : hi[d];
 		}
 	}
 }
@@ -438,8 +438,8 @@ static void item_range(void *ctx, size_t lo, size_t hi, int w)
 			memcpy(j->tb[t] + 3, bhi, sizeof bhi);
 		}
 		for (int d = 0; d < 3; d++) {
-			wb[d] = fmin(wb[d], blo[d]);
-			wb[3 + d] = fmax(wb[3 + d], bhi[d]);
+			wb[d] = blo[d] < wb[d] ? blo[d] : wb[d];
+			wb[3 + d] = bhi[d] > wb[3 + d] ? bhi[d] : wb[3 + d];
 		}
 		const int *n = j->m->tri[t].n;
 		for (int a = 0; a < 3; a++) {
@@ -672,8 +672,8 @@ static void seg_box(const struct mesh *m, const double (*P)[3], int s, double lo
 {
 	const double *p = P[m->seg[s].n[0]], *q = P[m->seg[s].n[1]];
 	for (int d = 0; d < 3; d++) {
-		lo[d] = fmin(p[d], q[d]);
-		hi[d] = fmax(p[d], q[d]);
+		lo[d] = q[d] < p[d] ? q[d] : p[d];
+		hi[d] = q[d] > p[d] ? q[d] : p[d];
 	}
 }
 
