@@ -8,9 +8,12 @@
  *
  *  1. find every segment that crosses the interior of a triangle it does
  *     not touch ("pierces"), through a hashed grid of the triangles (cells
- *     about a segment long, only the occupied ones stored), searched by
- *     the threads (par.h) in ranges of segments: O(N) work for N
- *     triangles of similar size instead of the thesis' O(N^2) pair test.  Two triangles intersect exactly when an edge of
+ *     about two edges long, only the occupied ones stored, in Morton
+ *     order), searched by the threads (par.h) in ranges of segments, each
+ *     pair in the lowest cell both boxes touch: O(N) work for N
+ *     triangles of similar size instead of the thesis' O(N^2) pair
+ *     test; the passes after the first search only near what the
+ *     previous one changed.  Two triangles intersect exactly when an edge of
  *     one pierces the other (barring exact degeneracies), so the pierces
  *     are the self-intersections;
  *  2. the pierced segments are the ones the intersection curves cross

@@ -27,7 +27,11 @@
  *    the fast-marching front on a grid refined 4 times per axis (the
  *    issue's tolerance); the median distance is printed.
  * 5. The hashed grid gives the pierces of a search without grid, bit for
- *    bit, with 1, 2 and 3 threads (test_grid_reference).
+ *    bit, with 1, 2 and 3 threads (test_grid_reference), also on a mesh
+ *    of triangles of very unlike sizes whose nodes lie on cell borders
+ *    (test_grid_mixed: each pair is tested in the lowest cell both boxes
+ *    touch, which a triangle over many cells or a box ending on a border
+ *    would get wrong first).
  */
 #include "deloop_util.h"
 #include "par.h"
@@ -317,10 +321,57 @@ static void test_grid_reference(void)
 	check(bad_lists == 0, "pierce lists unlike the reference's", (double)bad_lists, 0);
 }
 
+/* Sheet A: the square [0, 2]^2 at z = 0 in 40 x 40 squares of 0.05 um,
+ * two triangles each; sheet B: the plane x = 0.5 + 0.1 z, y in [0.2,
+ * 1.8], z in [-0.5, 0.5], in squares of 0.05 um (its row at z = 0 lies in
+ * A); two triangles C over the whole of both, each in some thousand
+ * cells, crossing A and B and each other.  Node coordinates are multiples
+ * of 0.05, so many boxes end on cell borders. */
+static int grid_node(struct mesh *m, double x, double y, double z)
+{
+	double p[3] = {x, y, z}, up[3] = {0, 0, 1};
+	return mesh_add_node(m, p, up, 0);
+}
+
+static void test_grid_mixed(void)
+{
+	printf("hashed grid against the reference search, mixed sizes:\n");
+	struct mesh *m = mesh_new();
+	enum { NA = 40, NBY = 32, NBZ = 20 };
+	int a[NA + 1][NA + 1], b[NBY + 1][NBZ + 1];
+	for (int i = 0; i <= NA; i++)
+		for (int j = 0; j <= NA; j++)
+			a[i][j] = grid_node(m, 0.05 * i, 0.05 * j, 0);
+	for (int i = 0; i < NA; i++)
+		for (int j = 0; j < NA; j++) {
+			mesh_add_triangle(m, a[i][j], a[i + 1][j], a[i + 1][j + 1]);
+			mesh_add_triangle(m, a[i][j], a[i + 1][j + 1], a[i][j + 1]);
+		}
+	for (int i = 0; i <= NBY; i++)
+		for (int k = 0; k <= NBZ; k++) {
+			double z = -0.5 + 0.05 * k;
+			b[i][k] = grid_node(m, 0.5 + 0.1 * z, 0.2 + 0.05 * i, z);
+		}
+	for (int i = 0; i < NBY; i++)
+		for (int k = 0; k < NBZ; k++) {
+			mesh_add_triangle(m, b[i][k], b[i + 1][k], b[i + 1][k + 1]);
+			mesh_add_triangle(m, b[i][k], b[i + 1][k + 1], b[i][k + 1]);
+		}
+	mesh_add_triangle(m, grid_node(m, -0.1, -0.1, 0.3), grid_node(m, 2.1, -0.1, -0.3),
+			  grid_node(m, 1, 2.1, 0.1));
+	mesh_add_triangle(m, grid_node(m, -0.1, 1, -0.4), grid_node(m, 2.1, 0.3, 0.4),
+			  grid_node(m, 2.1, 1.9, 0.2));
+	long bad_lists = same_pierces(m, "sheets and two large triangles");
+	check(bad_lists == 0, "pierce lists unlike the reference's (mixed sizes)", (double)bad_lists,
+	      0);
+	mesh_free(m);
+}
+
 int main(void)
 {
 	test_index();
 	test_grid_reference();
+	test_grid_mixed();
 	test_spheres(0.8, 0);
 	test_spheres(1.0, 0);
 	test_spheres(1.0, SHIFT);
