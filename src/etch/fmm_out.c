@@ -15,6 +15,7 @@
 #include "fmm.h"
 #include "fmt_plot.h"
 #include "par.h"
+#include "tri_decimate.h"
 #include "util.h"
 
 #include <math.h>
@@ -105,6 +106,20 @@ static void collect(void *ctx, const double tri[9])
 	tr->n++;
 }
 
+double fmm_default_tol(const struct fmm *f)
+{
+	return FMM_TOL_FRACTION * fmin(f->h[0], f->h[1]);
+}
+
+size_t fmm_decimate(const struct fmm *f, double **v, size_t n, size_t *cap, double tol)
+{
+	double h = fmax(f->h[0], fmax(f->h[1], f->h[2]));
+	/* iso.h computes an edge's crossing in each tetrahedron holding it,
+	 * equal to rounding: a billionth of a cell welds them, and places a
+	 * vertex on a box face (the caps are snapped onto the faces) */
+	return tri_decimate(v, n, cap, tol, 1e-9 * h, f->bounds, 1e-9 * h, NULL);
+}
+
 /* The solution sampled at every refine[d]-th node: the rate grid. */
 static struct fmm *coarse_view(const struct fmm *f)
 {
@@ -155,6 +170,7 @@ struct batch {
 	const double *times;
 	struct tris *tr;
 	int dense;
+	double tol;             /* decimation bound, um (0: exact-flat compaction only) */
 };
 
 static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
@@ -165,15 +181,21 @@ static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
 		struct tris *tr = &b->tr[k];
 		tr->n = 0;
 		fmm_surface(b->f, b->times[k], collect, tr);
-		if (!b->dense)
+		if (b->dense)
+			continue;
+		if (b->tol > 0)
+			tr->n = fmm_decimate(b->f, &tr->v, tr->n, &tr->cap, b->tol);
+		else
 			tr->n = fmm_compact(b->f, &tr->v, tr->n, &tr->cap);
 	}
 }
 
 void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
-		      const char *path3d, const char *path2d, int dense)
+		      const char *path3d, const char *path2d, int dense, double tol)
 {
 	struct fmm *f = coarse_view(fine);
+	if (tol < 0)
+		tol = fmm_default_tol(f);
 	struct plot_writer *w3 = path3d ? fmt_plot_open(path3d, 3) : NULL;
 	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
 	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
@@ -185,7 +207,7 @@ void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
 	struct tris *all = xcalloc((size_t)nb, sizeof *all);
 	for (int k0 = 0; k0 < ntimes; k0 += nb) {
 		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
-		struct batch b = {f, times + k0, all, dense};
+		struct batch b = {f, times + k0, all, dense, tol};
 		par_for((size_t)m, 1, extract_range, &b);
 		for (int q = 0; q < m; q++) {
 			struct tris *tr = &all[q];
