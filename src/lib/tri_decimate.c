@@ -28,6 +28,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+struct cand;
+
 struct mesh {
 	size_t nv, nt;
 	double *p;              /* 3 per vertex */
@@ -49,6 +51,11 @@ struct mesh {
 	long *star;
 	int *pts;
 	size_t cstar, cpts, nstar, npts;
+	int *nbr;
+	size_t cnbr;
+	size_t *phint, cphint;
+	struct cand *cands;
+	size_t ccands;
 	unsigned *mark;
 	unsigned stamp;
 	int *ring, *ring2;
@@ -66,24 +73,30 @@ static uint64_t bin_hash(int64_t a, int64_t b, int64_t c)
 	return h ^ (h >> 29);
 }
 
+static void bin_of(const double *x, double cell, int64_t b[3])
+{
+	for (int d = 0; d < 3; d++)
+		b[d] = (int64_t)floor(x[d] / cell);
+}
+
 static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 {
-	size_t cap = 16;
+	/* a table of vertex numbers, at most half full (3n vertices if no
+	 * two triangles share one; a closed surface has about n/2) */
+	size_t cap = 16, pcap = 0;
 	while (cap < 6 * n + 16)
 		cap *= 2;
 	int *tab = xreallocarray(NULL, cap, sizeof *tab);
-	int64_t *bin = xreallocarray(NULL, 9 * n + 3, sizeof *bin);
 	for (size_t i = 0; i < cap; i++)
 		tab[i] = -1;
-	m->p = xreallocarray(NULL, 9 * n + 3, sizeof *m->p);
+	m->p = NULL;
 	m->tv = xreallocarray(NULL, 3 * n + 1, sizeof *m->tv);
 	double cell = eps > 0 ? eps : 1e-300;
 	size_t nv = 0;
 	for (size_t c = 0; c < 3 * n; c++) {
 		const double *x = v + 3 * c;
 		int64_t b[3];
-		for (int d = 0; d < 3; d++)
-			b[d] = (int64_t)floor(x[d] / cell);
+		bin_of(x, cell, b);
 		int found = -1;
 		for (int dz = -1; dz <= 1; dz++)
 			for (int dy = -1; dy <= 1; dy++)
@@ -92,10 +105,11 @@ static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 					size_t s = bin_hash(k[0], k[1], k[2]) & (cap - 1);
 					for (; tab[s] >= 0; s = (s + 1) & (cap - 1)) {
 						int w = tab[s];
-						const int64_t *bw = bin + 3 * (size_t)w;
+						const double *y = m->p + 3 * (size_t)w;
+						int64_t bw[3];
+						bin_of(y, cell, bw);
 						if (bw[0] != k[0] || bw[1] != k[1] || bw[2] != k[2])
 							continue;
-						const double *y = m->p + 3 * (size_t)w;
 						if (fabs(y[0] - x[0]) <= eps && fabs(y[1] - x[1]) <= eps &&
 						    fabs(y[2] - x[2]) <= eps && (found < 0 || w < found))
 							found = w;
@@ -103,8 +117,8 @@ static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 				}
 		if (found < 0) {
 			found = (int)nv;
+			xgrow(&m->p, &pcap, 3 * (nv + 1), sizeof *m->p);
 			memcpy(m->p + 3 * nv, x, 3 * sizeof *x);
-			memcpy(bin + 3 * nv, b, sizeof b);
 			size_t s = bin_hash(b[0], b[1], b[2]) & (cap - 1);
 			while (tab[s] >= 0)
 				s = (s + 1) & (cap - 1);
@@ -114,7 +128,6 @@ static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 		m->tv[c] = found;
 	}
 	free(tab);
-	free(bin);
 	return nv;
 }
 
@@ -219,8 +232,11 @@ static int shared(const struct mesh *m, int u, int v, int opp[2])
 	return k;
 }
 
-/* whether collapsing u onto v is allowed; its cost in *cost */
-static int valid(struct mesh *m, int u, int v, double *cost)
+/* whether collapsing u onto v is allowed, its cost in *cost; without
+ * full only the box, the boundary and the cost are checked (the heap's
+ * order), with full the topology, orientation and shape too (the
+ * input vertices and samples are points_ok's) */
+static int valid(struct mesh *m, int u, int v, double *cost, int full)
 {
 	if ((m->face[u] & ~m->face[v]) || (m->flag[v] & F_LOCKED))
 		return 0;
@@ -234,6 +250,9 @@ static int valid(struct mesh *m, int u, int v, double *cost)
 	double c = q_eval(m->q + 10 * (size_t)u, m->q + 10 * (size_t)v, m->p + 3 * (size_t)v);
 	if (!(c <= m->tol2))
 		return 0;
+	*cost = c;
+	if (!full)
+		return 1;
 	/* link condition: the common neighbours are the opposite vertices */
 	size_t nu = ring_of(m, u, &m->ring, &m->cring);
 	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
@@ -325,6 +344,8 @@ static void gather(struct mesh *m, int u)
 {
 	m->nstar = m->npts = 0;
 	xgrow(&m->pts, &m->cpts, 1, sizeof *m->pts);
+	xgrow(&m->phint, &m->cphint, 1, sizeof *m->phint);
+	m->phint[0] = 0;
 	m->pts[m->npts++] = u;
 	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
 		long t = c / 3;
@@ -334,19 +355,26 @@ static void gather(struct mesh *m, int u)
 		m->star[m->nstar++] = t;
 		for (int w = m->thead[t]; w >= 0; w = m->pnext[w]) {
 			xgrow(&m->pts, &m->cpts, m->npts + 1, sizeof *m->pts);
+			xgrow(&m->phint, &m->cphint, m->npts + 1, sizeof *m->phint);
+			m->phint[m->npts] = m->nstar - 1;
 			m->pts[m->npts++] = w;
 		}
 	}
 }
 
 /* the star's triangle nearest to input vertex w once u is on v (-1: none
- * within tol) */
-static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist)
+ * within tol); with any, the first within tol, from the star's
+ * triangle number hint on (the one w belonged to) */
+static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist, int any,
+			size_t hint)
 {
 	long best = -1;
 	double bd = m->tol;
 	const double *p = m->p + 3 * (size_t)w;
-	for (size_t k = 0; k < m->nstar; k++) {
+	for (size_t k0 = 0; k0 < m->nstar; k0++) {
+		size_t k = (k0 + hint) % m->nstar;
+		if (any && best >= 0)
+			break;
 		const int *tv = m->tv + 3 * m->star[k];
 		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
 			continue;
@@ -384,7 +412,7 @@ static int points_ok(struct mesh *m, int u, int v)
 	gather(m, u);
 	for (size_t i = 0; i < m->npts; i++) {
 		double d;
-		if (nearest_new(m, u, v, m->pts[i], &d) < 0)
+		if (nearest_new(m, u, v, m->pts[i], &d, 1, m->phint[i]) < 0)
 			return 0;
 	}
 	m->stamp++;
@@ -397,6 +425,9 @@ static int points_ok(struct mesh *m, int u, int v)
 			add_cands(m, w == u ? v : w, &nc);
 		}
 	enum { S = TRI_DECIMATE_SAMPLES };
+	size_t last = 0;
+	if (nc == 0)
+		return 0;
 	for (size_t k = 0; k < m->nstar; k++) {
 		const int *tv = m->tv + 3 * m->star[k];
 		if (tv[0] == v || tv[1] == v || tv[2] == v)
@@ -411,11 +442,16 @@ static int points_ok(struct mesh *m, int u, int v)
 				double x = (double)i / S, y = (double)j / S, q[3];
 				for (int d = 0; d < 3; d++)
 					q[d] = (1 - x - y) * a[0][d] + x * a[1][d] + y * a[2][d];
+				/* the triangle that held the last sample first: the
+				 * samples are near each other */
 				int near = 0;
-				for (size_t c = 0; c < nc && !near; c++) {
-					const int *o = m->otv + 3 * m->cand[c];
+				for (size_t c = 0; c <= nc && !near; c++) {
+					size_t t = c == 0 ? m->cand[last] : m->cand[c - 1];
+					const int *o = m->otv + 3 * t;
 					near = point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1],
 							 m->p + 3 * (size_t)o[2]) <= m->tol;
+					if (near && c > 0)
+						last = c - 1;
 				}
 				if (!near)
 					return 0;
@@ -473,28 +509,51 @@ static struct entry heap_pop(struct heap *h)
 	return top;
 }
 
-/* pushes u's cheapest valid collapse, if any (full: keeping the input
- * vertices within tol too) */
+struct cand {
+	double cost;
+	int v;
+};
+
+static int cand_cmp(const void *a, const void *b)
+{
+	const struct cand *p = a, *q = b;
+	if (p->cost != q->cost)
+		return p->cost < q->cost ? -1 : 1;
+	return (p->v > q->v) - (p->v < q->v);
+}
+
+/* pushes u's cheapest collapse: without full the cheapest by the cost
+ * alone (checked in full when popped), with full the cheapest that
+ * passes every check */
 static void consider(struct mesh *m, struct heap *h, int u, int full)
 {
 	if (m->flag[u] & (F_LOCKED | F_DEAD))
 		return;
-	int *cand = NULL;
-	size_t cc = 0;
-	size_t k = ring_of(m, u, &cand, &cc);
-	double best = 0;
-	int bv = -1;
+	size_t k = ring_of(m, u, &m->nbr, &m->cnbr), nc = 0;
+	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
 	for (size_t i = 0; i < k; i++) {
 		double c;
-		if (valid(m, u, cand[i], &c) && (bv < 0 || c < best || (c == best && cand[i] < bv)) &&
-		    (!full || points_ok(m, u, cand[i]))) {
-			best = c;
-			bv = cand[i];
+		if (valid(m, u, m->nbr[i], &c, 0))
+			m->cands[nc++] = (struct cand){c, m->nbr[i]};
+	}
+	if (nc == 0)
+		return;
+	if (!full) {
+		struct cand b = m->cands[0];
+		for (size_t i = 1; i < nc; i++)
+			if (cand_cmp(&m->cands[i], &b) < 0)
+				b = m->cands[i];
+		heap_push(h, (struct entry){b.cost, u, b.v, m->ver[u]});
+		return;
+	}
+	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
+	for (size_t i = 0; i < nc; i++) {
+		double c;
+		if (valid(m, u, m->cands[i].v, &c, 1) && points_ok(m, u, m->cands[i].v)) {
+			heap_push(h, (struct entry){c, u, m->cands[i].v, m->ver[u]});
+			return;
 		}
 	}
-	free(cand);
-	if (bv >= 0)
-		heap_push(h, (struct entry){best, u, bv, m->ver[u]});
 }
 
 static void collapse(struct mesh *m, int u, int v)
@@ -504,7 +563,7 @@ static void collapse(struct mesh *m, int u, int v)
 	long *own = xreallocarray(NULL, m->npts + 1, sizeof *own);
 	for (size_t i = 0; i < m->npts; i++) {
 		double d;
-		own[i] = nearest_new(m, u, v, m->pts[i], &d);
+		own[i] = nearest_new(m, u, v, m->pts[i], &d, 0, 0);
 	}
 	for (size_t k = 0; k < m->nstar; k++)
 		m->thead[m->star[k]] = -1;
@@ -531,6 +590,15 @@ static void collapse(struct mesh *m, int u, int v)
 	}
 	m->head[u] = -1;
 	m->flag[u] |= F_DEAD;
+	/* v's list without its dead corners (they would pile up on the
+	 * vertices that absorb many) */
+	long *pc = &m->head[v];
+	while (*pc >= 0) {
+		if (m->tv[3 * (*pc / 3)] < 0)
+			*pc = m->next[*pc];
+		else
+			pc = &m->next[*pc];
+	}
 	for (int k = 0; k < 10; k++)
 		m->q[10 * (size_t)v + k] += m->q[10 * (size_t)u + k];
 }
@@ -689,7 +757,7 @@ size_t tri_decimate(double **vp, size_t n, size_t *cap, double tol, double weld_
 			if ((m.flag[e.u] & F_DEAD) || e.ver != m.ver[e.u])
 				continue;
 			double c;
-			if (!valid(&m, e.u, e.v, &c) || !points_ok(&m, e.u, e.v)) {
+			if (!valid(&m, e.u, e.v, &c, 1) || !points_ok(&m, e.u, e.v)) {
 				m.ver[e.u]++;
 				consider(&m, &h, e.u, 1);
 				continue;
@@ -731,6 +799,9 @@ size_t tri_decimate(double **vp, size_t n, size_t *cap, double tol, double weld_
 	free(m.ring);
 	free(m.ring2);
 	free(m.thead);
+	free(m.nbr);
+	free(m.phint);
+	free(m.cands);
 	free(m.otv);
 	free(m.ostart);
 	free(m.otri);
