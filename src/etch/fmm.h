@@ -131,10 +131,17 @@ void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 #define FMM_TOL_FRACTION 0.02
 double fmm_default_tol(const struct fmm *f);
 
-/* Decimates the n triangles *v of one set (tri_decimate.h) with the
- * bound tol (um), the vertices welded and kept on the box faces as the
- * grid f places them.  Returns the new count. */
-size_t fmm_decimate(const struct fmm *f, double **v, size_t n, size_t *cap, double tol);
+/* Each set is decimated in x-y tiles of at most FMM_TILE_CELLS rate-grid
+ * cells a side (in parallel, and in memory bounded by the tile; the
+ * vertices on the seams stay): examples/contact (50 cells) is one tile,
+ * a 20 um window at 0.05 um 16. */
+enum { FMM_TILE_CELLS = 128 };
+
+/* Decimates in place the n triangles v (9 doubles each) of one tile of a
+ * set (tri_decimate.h) with the bound tol (um), the vertices welded and
+ * kept on the box faces as the grid f places them, and those on the
+ * planes keep (x0 x1 y0 y1; infinite: none) kept.  Returns the count. */
+size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4]);
 
 /* Replaces, in the n triangles *v (9 doubles each, *cap allocated, as
  * xgrow), every rectangle of grid columns whose surface is one exactly

@@ -675,12 +675,11 @@ static void classify(struct mesh *m, struct tri_decimate_stats *st)
 	free(nb);
 }
 
-size_t tri_decimate(double **vp, size_t n, size_t *cap, double tol, double weld_eps,
-		    const double box[6], double box_eps, struct tri_decimate_stats *stp)
+size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct mesh m = {0};
-	double *v = *vp;
 	m.nv = weld(&m, v, n, weld_eps);
 	/* drop the triangles welding made degenerate */
 	size_t nt = 0;
@@ -723,6 +722,11 @@ size_t tri_decimate(double **vp, size_t n, size_t *cap, double tol, double weld_
 			for (int f = 0; f < 6; f++)
 				if (fabs(m.p[3 * i + f / 2] - box[f]) <= box_eps)
 					m.face[i] |= (unsigned char)(1u << f);
+	if (keep)
+		for (size_t i = 0; i < m.nv; i++)
+			for (int f = 0; f < 4; f++)
+				if (fabs(m.p[3 * i + f / 2] - keep[f]) <= box_eps)
+					m.flag[i] |= F_LOCKED;
 	for (size_t i = 0; i < m.nv; i++)
 		m.head[i] = -1;
 	for (size_t c = 3 * nt; c-- > 0;) {
@@ -783,7 +787,6 @@ size_t tri_decimate(double **vp, size_t n, size_t *cap, double tol, double weld_
 			memcpy(v + 9 * out + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
 		out++;
 	}
-	(void)cap;
 	st.out = out;
 	if (stp)
 		*stp = st;

@@ -36,14 +36,17 @@ struct tri_decimate_stats {
 	size_t locked;          /* vertices on a non-manifold edge or a crack off the box */
 };
 
-/* Decimates the n triangles in *v (9 doubles each, *cap allocated as
- * xgrow) in place and returns the new count.  Vertices closer than weld
+/* Decimates the n triangles in v (9 doubles each) in place and returns
+ * the new count (at most n).  Vertices closer than weld
  * (um; per coordinate) are one vertex; box (xmin xmax ymin ymax zmin
  * zmax, NULL: none) with box_eps the distance within which a vertex is on
- * a face.  tol <= 0 only welds and drops the triangles that welding makes
+ * a face.  Vertices on the planes x = keep[0], x = keep[1], y = keep[2]
+ * or y = keep[3] (within box_eps; keep NULL: none) stay where they are
+ * and take in no other: a surface cut into tiles along such planes and
+ * decimated tile by tile joins up again.  tol <= 0 only welds and drops the triangles that welding makes
  * degenerate.  Triangles keep their orientation and their relative
  * order.  st may be NULL. */
-size_t tri_decimate(double **v, size_t n, size_t *cap, double tol, double weld,
-		    const double box[6], double box_eps, struct tri_decimate_stats *st);
+size_t tri_decimate(double *v, size_t n, double tol, double weld, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *st);
 
 #endif

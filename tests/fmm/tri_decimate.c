@@ -81,7 +81,7 @@ static void plane(void)
 		}
 	const double box[6] = {0, 1, 0, 1, -1, 1};
 	struct tri_decimate_stats st;
-	s.n = tri_decimate(&s.v, s.n, &s.cap, 1e-3, 1e-12, box, 1e-12, &st);
+	s.n = tri_decimate(s.v, s.n, 1e-3, 1e-12, box, 1e-12, NULL, &st);
 	double area, vol, nmin[3];
 	area_vol(&s, &area, &vol, nmin);
 	CHECK(s.n <= 8 && s.n >= 2, "plane: %zu triangles, want 2 to 8", s.n);
@@ -210,7 +210,7 @@ static void spheres(void)
 	double sag = 1 - cos(emax / 2), a0, v0, a1, v1;
 	area_vol(&in, &a0, &v0, NULL);
 	struct tri_decimate_stats st;
-	s.n = tri_decimate(&s.v, s.n, &s.cap, tol, 1e-12, NULL, 0, &st);
+	s.n = tri_decimate(s.v, s.n, tol, 1e-12, NULL, 0, NULL, &st);
 	printf("sphere: welded %zu vertices, %zu open edges, %zu locked\n", st.vertices, st.boundary_edges, st.locked);
 	area_vol(&s, &a1, &v1, NULL);
 	CHECK(3 * s.n < in.n, "sphere: %zu of %zu triangles remain", s.n, in.n);
@@ -243,7 +243,7 @@ static void spheres(void)
 	free(s.v);
 	/* tol 0: welding only */
 	s = sphere();
-	s.n = tri_decimate(&s.v, s.n, &s.cap, 0, 1e-12, NULL, 0, NULL);
+	s.n = tri_decimate(s.v, s.n, 0, 1e-12, NULL, 0, NULL, NULL);
 	CHECK(s.n == in.n && memcmp(s.v, in.v, 9 * in.n * sizeof *s.v) == 0, "sphere, tol 0: changed");
 	free(s.v);
 	free(in.v);
