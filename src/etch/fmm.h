@@ -118,8 +118,8 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * triangle a closed 4-point curve p1 p2 p3 p1, bounds the rate box),
  * path2d in curves.plot.2D form (the same triangles projected on x-y).
  * Either path may be NULL.  Files are committed atomically.  Unless
- * dense, each set is decimated with the bound tol, um (fmm_decimate;
- * tol < 0: fmm_default_tol), or with tol 0 only its exactly flat regions
+ * dense, each set is decimated with the bound tol, um, in tiles
+ * (fmm_decimate_tile; tol < 0: fmm_default_tol), or with tol 0 only its exactly flat regions
  * are written as large triangles (fmm_compact); the sets are extracted
  * in parallel (par.h), byte-identical for any thread count. */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
