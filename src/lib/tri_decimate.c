@@ -45,6 +45,8 @@ struct mesh {
 	int *otv;               /* the input triangles (welded) */
 	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
 	unsigned *omark;        /* per input triangle, for m->cand */
+	float *osph;            /* per input triangle: a bounding sphere, centre
+				 * and radius (rounded outwards) */
 	size_t *cand;
 	size_t ccand;
 	/* scratch */
@@ -58,6 +60,7 @@ struct mesh {
 	size_t ccands;
 	unsigned *mark;
 	unsigned stamp;
+	int *cnt;               /* per vertex: triangles shared with consider's u */
 	int *ring, *ring2;
 	size_t cring, cring2;
 };
@@ -236,12 +239,12 @@ static int shared(const struct mesh *m, int u, int v, int opp[2])
  * full only the box, the boundary and the cost are checked (the heap's
  * order), with full the topology, orientation and shape too (the
  * input vertices and samples are points_ok's) */
-static int valid(struct mesh *m, int u, int v, double *cost, int full)
+/* the checks of the heap's order: the box, the boundary (ns: the
+ * triangles holding u and v) and the cost */
+static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
 {
 	if ((m->face[u] & ~m->face[v]) || (m->flag[v] & F_LOCKED))
 		return 0;
-	int opp[2];
-	int ns = shared(m, u, v, opp);
 	if (m->flag[u] & F_BOUNDARY) {
 		if (ns != 1)    /* a boundary vertex moves along the boundary only */
 			return 0;
@@ -249,6 +252,17 @@ static int valid(struct mesh *m, int u, int v, double *cost, int full)
 		return 0;
 	double c = q_eval(m->q + 10 * (size_t)u, m->q + 10 * (size_t)v, m->p + 3 * (size_t)v);
 	if (!(c <= m->tol2))
+		return 0;
+	*cost = c;
+	return 1;
+}
+
+static int valid(struct mesh *m, int u, int v, double *cost, int full)
+{
+	int opp[2];
+	int ns = shared(m, u, v, opp);
+	double c;
+	if (!valid_cheap(m, u, v, ns, &c))
 		return 0;
 	*cost = c;
 	if (!full)
@@ -442,16 +456,22 @@ static int points_ok(struct mesh *m, int u, int v)
 				double x = (double)i / S, y = (double)j / S, q[3];
 				for (int d = 0; d < 3; d++)
 					q[d] = (1 - x - y) * a[0][d] + x * a[1][d] + y * a[2][d];
-				/* the triangle that held the last sample first: the
-				 * samples are near each other */
+				/* the triangle that held the last sample first (the
+				 * samples are near each other), then the list from
+				 * its start (the triangles around u) */
 				int near = 0;
 				for (size_t c = 0; c <= nc && !near; c++) {
-					size_t t = c == 0 ? m->cand[last] : m->cand[c - 1];
-					const int *o = m->otv + 3 * t;
+					size_t ci = c == 0 ? last : c - 1;
+					const int *o = m->otv + 3 * m->cand[ci];
+					const float *b = m->osph + 4 * m->cand[ci];
+					double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
+					double r = b[3] + m->tol;
+					if (dot(e, e) > r * r)
+						continue;       /* its bounding sphere is too far */
 					near = point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1],
 							 m->p + 3 * (size_t)o[2]) <= m->tol;
-					if (near && c > 0)
-						last = c - 1;
+					if (near)
+						last = ci;
 				}
 				if (!near)
 					return 0;
@@ -531,10 +551,21 @@ static void consider(struct mesh *m, struct heap *h, int u, int full)
 		return;
 	size_t k = ring_of(m, u, &m->nbr, &m->cnbr), nc = 0;
 	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
+	/* the triangles u shares with each neighbour, in one pass */
+	for (size_t i = 0; i < k; i++)
+		m->cnt[m->nbr[i]] = 0;
+	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
+		const int *tv = m->tv + 3 * (c / 3);
+		if (tv[0] >= 0)
+			for (int s2 = 0; s2 < 3; s2++)
+				if (tv[s2] != u)
+					m->cnt[tv[s2]]++;
+	}
 	for (size_t i = 0; i < k; i++) {
 		double c;
-		if (valid(m, u, m->nbr[i], &c, 0))
-			m->cands[nc++] = (struct cand){c, m->nbr[i]};
+		int w = m->nbr[i];
+		if (valid_cheap(m, u, w, m->cnt[w], &c))
+			m->cands[nc++] = (struct cand){c, w};
 	}
 	if (nc == 0)
 		return;
@@ -698,6 +729,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.ver = xcalloc(m.nv + 1, sizeof *m.ver);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
+	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
 	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
 	m.tol = tol;
@@ -706,6 +738,24 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	m.ostart = xcalloc(m.nv + 2, sizeof *m.ostart);
 	m.otri = xreallocarray(NULL, 3 * nt + 1, sizeof *m.otri);
 	m.omark = xcalloc(nt + 1, sizeof *m.omark);
+	m.osph = xreallocarray(NULL, 4 * nt + 1, sizeof *m.osph);
+	for (size_t t = 0; t < nt; t++) {
+		const int *a = m.tv + 3 * t;
+		float *b = m.osph + 4 * t;
+		double r = 0;
+		for (int d = 0; d < 3; d++)
+			b[d] = (float)((m.p[3 * (size_t)a[0] + d] + m.p[3 * (size_t)a[1] + d] +
+					m.p[3 * (size_t)a[2] + d]) / 3);
+		for (int s2 = 0; s2 < 3; s2++) {
+			const double *x = m.p + 3 * (size_t)a[s2];
+			double e[3] = {x[0] - b[0], x[1] - b[1], x[2] - b[2]};
+			r = fmax(r, sqrt(dot(e, e)));
+		}
+		/* float rounding of the centre and radius: a relative 1e-6 of
+		 * the coordinates more keeps the sphere around the triangle */
+		double mag = fabs(b[0]) + fabs(b[1]) + fabs(b[2]) + r;
+		b[3] = (float)(r + 1e-6 * mag);
+	}
 	for (size_t c = 0; c < 3 * nt; c++)
 		m.ostart[m.tv[c] + 2]++;
 	for (size_t i = 0; i < m.nv; i++)
@@ -796,6 +846,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	free(m.flag);
 	free(m.ver);
 	free(m.mark);
+	free(m.cnt);
 	free(m.head);
 	free(m.next);
 	free(m.tv);
@@ -809,6 +860,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	free(m.ostart);
 	free(m.otri);
 	free(m.omark);
+	free(m.osph);
 	free(m.cand);
 	free(m.pnext);
 	free(m.star);
