@@ -94,16 +94,24 @@ static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 		tab[i] = -1;
 	m->p = NULL;
 	m->tv = xreallocarray(NULL, 3 * n + 1, sizeof *m->tv);
-	double cell = eps > 0 ? eps : 1e-300;
+	/* bins much larger than eps (still far smaller than the triangles):
+	 * the neighbouring bins are searched only along the axes where the
+	 * point lies within eps of its bin's side */
+	double cell = eps > 0 ? 1024 * eps : 1e-300;
 	size_t nv = 0;
 	for (size_t c = 0; c < 3 * n; c++) {
 		const double *x = v + 3 * c;
 		int64_t b[3];
 		bin_of(x, cell, b);
+		int lo[3], hi[3];
+		for (int d = 0; d < 3; d++) {
+			lo[d] = floor((x[d] - eps) / cell) < (double)b[d] ? -1 : 0;
+			hi[d] = floor((x[d] + eps) / cell) > (double)b[d] ? 1 : 0;
+		}
 		int found = -1;
-		for (int dz = -1; dz <= 1; dz++)
-			for (int dy = -1; dy <= 1; dy++)
-				for (int dx = -1; dx <= 1; dx++) {
+		for (int dz = lo[2]; dz <= hi[2]; dz++)
+			for (int dy = lo[1]; dy <= hi[1]; dy++)
+				for (int dx = lo[0]; dx <= hi[0]; dx++) {
 					int64_t k[3] = {b[0] + dx, b[1] + dy, b[2] + dz};
 					size_t s = bin_hash(k[0], k[1], k[2]) & (cap - 1);
 					for (; tab[s] >= 0; s = (s + 1) & (cap - 1)) {
