@@ -7,13 +7,14 @@
  * distance always meet), then each vertex keeps the list of its corners
  * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
  * corners to v and splices them into v's list, dead corners are skipped
- * where the lists are read.  Every vertex has one entry in a binary heap:
- * its cheapest valid collapse, keyed (cost, vertex), stamped with the
- * vertex's version; after a collapse u -> v, v and its neighbours are
- * re-evaluated (their triangles or their targets' quadrics changed) and
- * stale entries are skipped when popped.  A popped collapse is checked
- * again in full before it is made, so the order can only miss a collapse
- * that became valid late, never make an invalid one.
+ * where the lists are read.  Every vertex has at most one entry in a
+ * binary heap, updated in place: its cheapest collapse by the cost and
+ * the box and boundary rules, keyed (cost, vertex); after a collapse
+ * u -> v, v and its neighbours are re-evaluated (their triangles or
+ * their targets' quadrics changed).  A popped collapse is checked in full
+ * before it is made (one that fails re-ranks its vertex by every check),
+ * so the order can only miss a collapse that became valid late, never
+ * make an invalid one.
  *
  * Vertices whose edges are not all two-sided and consistently oriented,
  * or one-sided off the box (a crack where iso.h dropped a degenerate
@@ -36,7 +37,6 @@ struct mesh {
 	double *q;              /* quadric, 10 per vertex: aa ab ac ad bb bc bd cc cd dd */
 	unsigned char *face;    /* box faces a vertex lies on, bit f for bounds[f] */
 	unsigned char *flag;    /* F_* */
-	unsigned *ver;          /* version, for stale heap entries */
 	int *tv;                /* 3 vertex per triangle, -1: dead triangle */
 	long *head, *next;      /* corner lists: head per vertex, next per corner */
 	double tol, tol2;
@@ -488,17 +488,19 @@ static int points_ok(struct mesh *m, int u, int v)
 	return 1;
 }
 
-/* ---- heap of (cost, vertex, version) ---- */
+/* ---- heap of (cost, vertex): one entry per vertex, updated in place
+ * (a heap of stale entries grows to ten per collapse, and its pops miss
+ * the cache on a million-vertex tile) ---- */
 
 struct entry {
 	double cost;
 	int u, v;
-	unsigned ver;
 };
 
 struct heap {
 	struct entry *e;
 	size_t n, cap;
+	long *pos;              /* per vertex: its entry's index, -1: none */
 };
 
 static int before(const struct entry *a, const struct entry *b)
@@ -506,21 +508,23 @@ static int before(const struct entry *a, const struct entry *b)
 	return a->cost < b->cost || (a->cost == b->cost && a->u < b->u);
 }
 
-static void heap_push(struct heap *h, struct entry x)
+static void heap_place(struct heap *h, size_t i, struct entry x)
 {
-	xgrow(&h->e, &h->cap, h->n + 1, sizeof *h->e);
-	size_t i = h->n++;
-	while (i > 0 && before(&x, &h->e[(i - 1) / 2])) {
-		h->e[i] = h->e[(i - 1) / 2];
-		i = (i - 1) / 2;
-	}
 	h->e[i] = x;
+	h->pos[x.u] = (long)i;
 }
 
-static struct entry heap_pop(struct heap *h)
+static void sift_up(struct heap *h, size_t i, struct entry x)
 {
-	struct entry top = h->e[0], x = h->e[--h->n];
-	size_t i = 0;
+	while (i > 0 && before(&x, &h->e[(i - 1) / 2])) {
+		heap_place(h, i, h->e[(i - 1) / 2]);
+		i = (i - 1) / 2;
+	}
+	heap_place(h, i, x);
+}
+
+static void sift_down(struct heap *h, size_t i, struct entry x)
+{
 	for (;;) {
 		size_t c = 2 * i + 1;
 		if (c >= h->n)
@@ -529,11 +533,44 @@ static struct entry heap_pop(struct heap *h)
 			c++;
 		if (!before(&h->e[c], &x))
 			break;
-		h->e[i] = h->e[c];
+		heap_place(h, i, h->e[c]);
 		i = c;
 	}
-	if (h->n)
-		h->e[i] = x;
+	heap_place(h, i, x);
+}
+
+/* u's entry set to x (x.u == u), added if it had none */
+static void heap_set(struct heap *h, struct entry x)
+{
+	long p = h->pos[x.u];
+	if (p < 0) {
+		xgrow(&h->e, &h->cap, h->n + 1, sizeof *h->e);
+		sift_up(h, h->n++, x);
+	} else if (before(&x, &h->e[p]))
+		sift_up(h, (size_t)p, x);
+	else
+		sift_down(h, (size_t)p, x);
+}
+
+static void heap_remove(struct heap *h, int u)
+{
+	long p = h->pos[u];
+	if (p < 0)
+		return;
+	h->pos[u] = -1;
+	struct entry x = h->e[--h->n];
+	if ((size_t)p == h->n)
+		return;
+	if (before(&x, &h->e[p]))
+		sift_up(h, (size_t)p, x);
+	else
+		sift_down(h, (size_t)p, x);
+}
+
+static struct entry heap_pop(struct heap *h)
+{
+	struct entry top = h->e[0];
+	heap_remove(h, top.u);
 	return top;
 }
 
@@ -555,8 +592,10 @@ static int cand_cmp(const void *a, const void *b)
  * passes every check */
 static void consider(struct mesh *m, struct heap *h, int u, int full)
 {
-	if (m->flag[u] & (F_LOCKED | F_DEAD))
+	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
+		heap_remove(h, u);
 		return;
+	}
 	size_t k = ring_of(m, u, &m->nbr, &m->cnbr), nc = 0;
 	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
 	/* the triangles u shares with each neighbour, in one pass */
@@ -575,24 +614,27 @@ static void consider(struct mesh *m, struct heap *h, int u, int full)
 		if (valid_cheap(m, u, w, m->cnt[w], &c))
 			m->cands[nc++] = (struct cand){c, w};
 	}
-	if (nc == 0)
+	if (nc == 0) {
+		heap_remove(h, u);
 		return;
+	}
 	if (!full) {
 		struct cand b = m->cands[0];
 		for (size_t i = 1; i < nc; i++)
 			if (cand_cmp(&m->cands[i], &b) < 0)
 				b = m->cands[i];
-		heap_push(h, (struct entry){b.cost, u, b.v, m->ver[u]});
+		heap_set(h, (struct entry){b.cost, u, b.v});
 		return;
 	}
 	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
 	for (size_t i = 0; i < nc; i++) {
 		double c;
 		if (valid(m, u, m->cands[i].v, &c, 1) && points_ok(m, u, m->cands[i].v)) {
-			heap_push(h, (struct entry){c, u, m->cands[i].v, m->ver[u]});
+			heap_set(h, (struct entry){c, u, m->cands[i].v});
 			return;
 		}
 	}
+	heap_remove(h, u);
 }
 
 static void collapse(struct mesh *m, int u, int v)
@@ -735,7 +777,6 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	m.q = xcalloc(10 * m.nv + 1, sizeof *m.q);
 	m.face = xcalloc(m.nv + 1, 1);
 	m.flag = xcalloc(m.nv + 1, 1);
-	m.ver = xcalloc(m.nv + 1, sizeof *m.ver);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
@@ -809,32 +850,29 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 		if (m.flag[i] & F_LOCKED)
 			st.locked++;
 	if (tol > 0) {
-		struct heap h = {NULL, 0, 0};
+		struct heap h = {NULL, 0, 0, xreallocarray(NULL, m.nv + 1, sizeof *h.pos)};
+		for (size_t i = 0; i < m.nv; i++)
+			h.pos[i] = -1;
 		for (size_t i = 0; i < m.nv; i++)
 			consider(&m, &h, (int)i, 0);
 		int *nb = NULL;
 		size_t cnb = 0;
 		while (h.n) {
 			struct entry e = heap_pop(&h);
-			if ((m.flag[e.u] & F_DEAD) || e.ver != m.ver[e.u])
-				continue;
 			double c;
 			if (!valid(&m, e.u, e.v, &c, 1) || !points_ok(&m, e.u, e.v)) {
-				m.ver[e.u]++;
 				consider(&m, &h, e.u, 1);
 				continue;
 			}
 			collapse(&m, e.u, e.v);
 			size_t k = ring_of(&m, e.v, &nb, &cnb);
-			m.ver[e.v]++;
 			consider(&m, &h, e.v, 0);
-			for (size_t i = 0; i < k; i++) {
-				m.ver[nb[i]]++;
+			for (size_t i = 0; i < k; i++)
 				consider(&m, &h, nb[i], 0);
-			}
 		}
 		free(nb);
 		free(h.e);
+		free(h.pos);
 	}
 	size_t out = 0;
 	for (size_t t = 0; t < nt; t++) {
@@ -852,7 +890,6 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	free(m.q);
 	free(m.face);
 	free(m.flag);
-	free(m.ver);
 	free(m.mark);
 	free(m.cnt);
 	free(m.head);
