@@ -587,9 +587,10 @@ static int cand_cmp(const void *a, const void *b)
 	return (p->v > q->v) - (p->v < q->v);
 }
 
-/* pushes u's cheapest collapse: without full the cheapest by the cost
- * alone (checked in full when popped), with full the cheapest that
- * passes every check */
+/* pushes u's cheapest collapse: with full 0 the cheapest by the cost
+ * alone (checked in full when popped), 1 the cheapest that passes the
+ * topology and shape checks (valid), 2 the cheapest that passes every
+ * check (valid and points_ok) */
 static void consider(struct mesh *m, struct heap *h, int u, int full)
 {
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
@@ -629,7 +630,7 @@ static void consider(struct mesh *m, struct heap *h, int u, int full)
 	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
 	for (size_t i = 0; i < nc; i++) {
 		double c;
-		if (valid(m, u, m->cands[i].v, &c, 1) && points_ok(m, u, m->cands[i].v)) {
+		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
 			heap_set(h, (struct entry){c, u, m->cands[i].v});
 			return;
 		}
@@ -860,8 +861,16 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 		while (h.n) {
 			struct entry e = heap_pop(&h);
 			double c;
-			if (!valid(&m, e.u, e.v, &c, 1) || !points_ok(&m, e.u, e.v)) {
+			/* a failed collapse re-ranks u by the checks it failed:
+			 * the topology and shape alone (the input checks, which
+			 * rarely fail, run when the new entry is popped), or
+			 * those and the input checks */
+			if (!valid(&m, e.u, e.v, &c, 1)) {
 				consider(&m, &h, e.u, 1);
+				continue;
+			}
+			if (!points_ok(&m, e.u, e.v)) {
+				consider(&m, &h, e.u, 2);
 				continue;
 			}
 			collapse(&m, e.u, e.v);
