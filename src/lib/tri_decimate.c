@@ -61,6 +61,8 @@ struct mesh {
 	unsigned *mark;
 	unsigned stamp;
 	int *cnt;               /* per vertex: triangles shared with consider's u */
+	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
+				 * consider(u, 0) would give now */
 	int *ring, *ring2;
 	size_t cring, cring2;
 };
@@ -222,6 +224,32 @@ static size_t ring_of(struct mesh *m, int x, int **r, size_t *cap)
 			m->mark[w] = m->stamp;
 			xgrow(r, cap, k + 1, sizeof **r);
 			(*r)[k++] = w;
+		}
+	}
+	return k;
+}
+
+/* ring_of, and the triangles x shares with each neighbour w in
+ * m->cnt[w] */
+static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
+{
+	m->stamp++;
+	size_t k = 0;
+	for (long c = m->head[x]; c >= 0; c = m->next[c]) {
+		long t = c / 3;
+		if (m->tv[3 * t] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			int w = m->tv[3 * t + s];
+			if (w == x)
+				continue;
+			if (m->mark[w] != m->stamp) {
+				m->mark[w] = m->stamp;
+				m->cnt[w] = 0;
+				xgrow(r, cap, k + 1, sizeof **r);
+				(*r)[k++] = w;
+			}
+			m->cnt[w]++;
 		}
 	}
 	return k;
@@ -593,22 +621,13 @@ static int cand_cmp(const void *a, const void *b)
  * check (valid and points_ok) */
 static void consider(struct mesh *m, struct heap *h, int u, int full)
 {
+	m->exact[u] = full == 0;
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
 		heap_remove(h, u);
 		return;
 	}
-	size_t k = ring_of(m, u, &m->nbr, &m->cnbr), nc = 0;
+	size_t k = ring_cnt(m, u, &m->nbr, &m->cnbr), nc = 0;
 	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
-	/* the triangles u shares with each neighbour, in one pass */
-	for (size_t i = 0; i < k; i++)
-		m->cnt[m->nbr[i]] = 0;
-	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
-		const int *tv = m->tv + 3 * (c / 3);
-		if (tv[0] >= 0)
-			for (int s2 = 0; s2 < 3; s2++)
-				if (tv[s2] != u)
-					m->cnt[tv[s2]]++;
-	}
 	for (size_t i = 0; i < k; i++) {
 		double c;
 		int w = m->nbr[i];
@@ -780,6 +799,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
+	m.exact = xcalloc(m.nv + 1, 1);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
 	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
 	m.tol = tol;
@@ -856,10 +876,11 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 			h.pos[i] = -1;
 		for (size_t i = 0; i < m.nv; i++)
 			consider(&m, &h, (int)i, 0);
-		int *nb = NULL;
-		size_t cnb = 0;
+		int *nb = NULL, *nbc = NULL;
+		size_t cnb = 0, cnbc = 0;
 		while (h.n) {
 			struct entry e = heap_pop(&h);
+			m.exact[e.u] = 0;
 			double c;
 			/* a failed collapse re-ranks u by the checks it failed:
 			 * the topology and shape alone (the input checks, which
@@ -874,12 +895,35 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 				continue;
 			}
 			collapse(&m, e.u, e.v);
-			size_t k = ring_of(&m, e.v, &nb, &cnb);
 			consider(&m, &h, e.v, 0);
+			/* v's neighbours: only their collapses onto v (v's
+			 * quadric and the triangles they share with it changed)
+			 * or onto u (gone) are not as they were, so one whose
+			 * entry is consider(, 0)'s and aims at neither needs
+			 * only its collapse onto v weighed against it (the
+			 * same entry as a full consider) */
+			size_t k = ring_cnt(&m, e.v, &nb, &cnb);
+			xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
 			for (size_t i = 0; i < k; i++)
-				consider(&m, &h, nb[i], 0);
+				nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+			for (size_t i = 0; i < k; i++) {
+				int w = nb[i];
+				long p = h.pos[w];
+				if (!m.exact[w] || (p >= 0 && (h.e[p].v == e.u || h.e[p].v == e.v))) {
+					consider(&m, &h, w, 0);
+					continue;
+				}
+				if (m.flag[w] & (F_LOCKED | F_DEAD))
+					continue;
+				if (!valid_cheap(&m, w, e.v, nbc[i], &c))
+					continue;
+				struct cand a = {c, e.v};
+				if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+					heap_set(&h, (struct entry){c, w, e.v});
+			}
 		}
 		free(nb);
+		free(nbc);
 		free(h.e);
 		free(h.pos);
 	}
@@ -901,6 +945,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	free(m.flag);
 	free(m.mark);
 	free(m.cnt);
+	free(m.exact);
 	free(m.head);
 	free(m.next);
 	free(m.tv);
