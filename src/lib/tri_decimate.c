@@ -44,11 +44,8 @@ struct mesh {
 	int *pnext;             /* per vertex: the next one of the same triangle */
 	int *otv;               /* the input triangles (welded) */
 	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
-	unsigned *omark;        /* per input triangle, for m->cand */
 	float *osph;            /* per input triangle: a bounding sphere, centre
 				 * and radius (rounded outwards) */
-	size_t *cand;
-	size_t ccand;
 	/* scratch */
 	long *star;
 	int *pts;
@@ -441,16 +438,29 @@ static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist,
 	return best;
 }
 
-static void add_cands(struct mesh *m, int w, size_t *n)
+/* whether q is within tol of input triangle t */
+static int near_one(const struct mesh *m, const double *q, size_t t)
 {
-	for (size_t k = m->ostart[w]; k < m->ostart[w + 1]; k++) {
-		size_t t = m->otri[k];
-		if (m->omark[t] == m->stamp)
-			continue;
-		m->omark[t] = m->stamp;
-		xgrow(&m->cand, &m->ccand, *n + 1, sizeof *m->cand);
-		m->cand[(*n)++] = t;
-	}
+	const int *o = m->otv + 3 * t;
+	const float *b = m->osph + 4 * t;
+	double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
+	double r = b[3] + m->tol;
+	if (dot(e, e) > r * r)
+		return 0;       /* its bounding sphere is too far */
+	return point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1], m->p + 3 * (size_t)o[2]) <=
+	       m->tol;
+}
+
+/* the i-th vertex whose input triangles the samples are checked
+ * against (after gather): the tracked input vertices, then the corners
+ * of the star once u is on v */
+static int set_vertex(const struct mesh *m, int u, int v, size_t i)
+{
+	if (i < m->npts)
+		return m->pts[i];
+	i -= m->npts;
+	int w = m->tv[3 * m->star[i / 3] + i % 3];
+	return w == u ? v : w;
 }
 
 /* whether, once u is on v, every input vertex u's star answers for stays
@@ -465,19 +475,19 @@ static int points_ok(struct mesh *m, int u, int v)
 		if (nearest_new(m, u, v, m->pts[i], &d, 1, m->phint[i]) < 0)
 			return 0;
 	}
-	m->stamp++;
-	size_t nc = 0;
-	for (size_t i = 0; i < m->npts; i++)
-		add_cands(m, m->pts[i], &nc);
-	for (size_t k = 0; k < m->nstar; k++)
-		for (int s2 = 0; s2 < 3; s2++) {
-			int w = m->tv[3 * m->star[k] + s2];
-			add_cands(m, w == u ? v : w, &nc);
-		}
-	enum { S = TRI_DECIMATE_SAMPLES };
-	size_t last = 0;
-	if (nc == 0)
+	/* the set of input triangles the samples are checked against: those
+	 * of the tracked input vertices and of the new star's corners, read
+	 * where they are (whether any is within tol does not depend on the
+	 * order, nor on a triangle being tried twice) */
+	long last = -1;
+	for (size_t i = 0; i < m->npts + 3 * m->nstar && last < 0; i++) {
+		int w = set_vertex(m, u, v, i);
+		if (m->ostart[w] < m->ostart[w + 1])
+			last = (long)m->otri[m->ostart[w]];
+	}
+	if (last < 0)
 		return 0;
+	enum { S = TRI_DECIMATE_SAMPLES };
 	for (size_t k = 0; k < m->nstar; k++) {
 		const int *tv = m->tv + 3 * m->star[k];
 		if (tv[0] == v || tv[1] == v || tv[2] == v)
@@ -493,21 +503,19 @@ static int points_ok(struct mesh *m, int u, int v)
 				for (int d = 0; d < 3; d++)
 					q[d] = (1 - x - y) * a[0][d] + x * a[1][d] + y * a[2][d];
 				/* the triangle that held the last sample first (the
-				 * samples are near each other), then the list from
+				 * samples are near each other), then the set from
 				 * its start (the triangles around u) */
+				if (near_one(m, q, (size_t)last))
+					continue;
 				int near = 0;
-				for (size_t c = 0; c <= nc && !near; c++) {
-					size_t ci = c == 0 ? last : c - 1;
-					const int *o = m->otv + 3 * m->cand[ci];
-					const float *b = m->osph + 4 * m->cand[ci];
-					double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
-					double r = b[3] + m->tol;
-					if (dot(e, e) > r * r)
-						continue;       /* its bounding sphere is too far */
-					near = point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1],
-							 m->p + 3 * (size_t)o[2]) <= m->tol;
-					if (near)
-						last = ci;
+				for (size_t i2 = 0; i2 < m->npts + 3 * m->nstar && !near; i2++) {
+					int w = set_vertex(m, u, v, i2);
+					for (size_t k2 = m->ostart[w]; k2 < m->ostart[w + 1]; k2++)
+						if (near_one(m, q, m->otri[k2])) {
+							near = 1;
+							last = (long)m->otri[k2];
+							break;
+						}
 				}
 				if (!near)
 					return 0;
@@ -807,7 +815,6 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	memcpy(m.otv, m.tv, 3 * nt * sizeof *m.otv);
 	m.ostart = xcalloc(m.nv + 2, sizeof *m.ostart);
 	m.otri = xreallocarray(NULL, 3 * nt + 1, sizeof *m.otri);
-	m.omark = xcalloc(nt + 1, sizeof *m.omark);
 	m.osph = xreallocarray(NULL, 4 * nt + 1, sizeof *m.osph);
 	for (size_t t = 0; t < nt; t++) {
 		const int *a = m.tv + 3 * t;
@@ -958,9 +965,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	free(m.otv);
 	free(m.ostart);
 	free(m.otri);
-	free(m.omark);
 	free(m.osph);
-	free(m.cand);
 	free(m.pnext);
 	free(m.star);
 	free(m.pts);
