@@ -63,6 +63,7 @@ struct etch_opts {
 	int no2d;               /* -no2d: no curves.plot.2D */
 	int last;               /* -last: only the final set is written */
 	int dense;              /* -dense: fmm surfaces uncompacted */
+	double tol;             /* -tol: fmm decimation bound, um (< 0: default) */
 	int dryrun;             /* -n: check the command line only */
 	const char *input;
 };

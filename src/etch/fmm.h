@@ -118,11 +118,30 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * triangle a closed 4-point curve p1 p2 p3 p1, bounds the rate box),
  * path2d in curves.plot.2D form (the same triangles projected on x-y).
  * Either path may be NULL.  Files are committed atomically.  Unless
- * dense, flat regions are written as large triangles (fmm_compact); the
- * sets are extracted in parallel (par.h), byte-identical for any thread
- * count. */
+ * dense, each set is decimated with the bound tol, um, in tiles
+ * (fmm_decimate_tile; tol < 0: fmm_default_tol), or with tol 0 only its exactly flat regions
+ * are written as large triangles (fmm_compact); the sets are extracted
+ * in parallel (par.h), byte-identical for any thread count. */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
-		      const char *path3d, const char *path2d, int dense);
+		      const char *path3d, const char *path2d, int dense, double tol);
+
+/* The default decimation bound of fmm_write_curves (tol < 0, FMM_TOL_AUTO):
+ * FMM_TOL_FRACTION of the rate grid's finer x-y spacing, um. */
+#define FMM_TOL_AUTO (-1.0)
+#define FMM_TOL_FRACTION 0.02
+double fmm_default_tol(const struct fmm *f);
+
+/* Each set is decimated in x-y tiles of at most FMM_TILE_CELLS rate-grid
+ * cells a side (in parallel, and in memory bounded by the tile; the
+ * vertices on the seams stay): examples/contact (50 cells) is one tile,
+ * a 20 um window at 0.05 um 16. */
+enum { FMM_TILE_CELLS = 128 };
+
+/* Decimates in place the n triangles v (9 doubles each) of one tile of a
+ * set (tri_decimate.h) with the bound tol (um), the vertices welded and
+ * kept on the box faces as the grid f places them, and those on the
+ * planes keep (x0 x1 y0 y1; infinite: none) kept.  Returns the count. */
+size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4]);
 
 /* Replaces, in the n triangles *v (9 doubles each, *cap allocated, as
  * xgrow), every rectangle of grid columns whose surface is one exactly

@@ -25,7 +25,7 @@ static const char usage[] =
 	"usage: etch -et etchtime [-pt printtime] [-dt timestep] [-seg length]\n"
 	"            [-smax r] [-smin r] [-rl length] [-linear] [-euler] [-clip n]\n"
 	"            [-deloop [n]] [-cut x|y value] [-seed x y z]... [-method ray|fmm|cell|huygens]\n"
-	"            [-refine n|nx ny nz|auto] [-dense]\n"
+	"            [-refine n|nx ny nz|auto] [-dense] [-tol um]\n"
 	"            [-o curves.plot] [-no2d] [-last] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
 	"            [-threads n] rate-file\n"
 	"  -et etchtime     total development time, s (required)\n"
@@ -56,6 +56,10 @@ static const char usage[] =
 	"                   from the standing waves (the default)\n"
 	"  -dense           with -method fmm: write flat regions cell by cell, as\n"
 	"                   marching tetrahedra give them (default: large triangles)\n"
+	"  -tol um          with -method fmm: decimate each surface, no kept vertex\n"
+	"                   farther than um from the planes of the triangles it\n"
+	"                   replaced (default: 0.02 of the x-y grid spacing; 0:\n"
+	"                   only exactly flat regions merged)\n"
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
@@ -128,6 +132,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 	o->cut_axis = -1;
 	o->refine[0] = o->refine[1] = o->refine[2] = 1;
 	o->out3d = "curves.plot";
+	o->tol = -1;
 	const char *method = "ray", *cutaxis = NULL;
 	long threads = 0;
 	int refine_given = 0;
@@ -142,6 +147,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		    args_num(&a, "-smax", 0, 1e6, &o->smax) ||
 		    args_num(&a, "-smin", 0, 1e6, &o->smin) ||
 		    args_num(&a, "-rl", 0, 2, &o->rl) ||
+		    args_num(&a, "-tol", 0, 1e6, &o->tol) ||
 		    args_int(&a, "-clip", 1, 1000000000, &o->clip_every) ||
 		    args_int(&a, "-threads", 1, PAR_MAX_THREADS, &threads) ||
 		    args_str(&a, "-o", &o->out3d) ||
@@ -238,6 +244,10 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		args_error(&a, "-method cell and huygens take no -xcheck, -deloop or -cut");
 	if (o->dense && o->method != METHOD_FMM)
 		args_error(&a, "-dense goes with -method fmm");
+	if (o->tol >= 0 && o->method != METHOD_FMM)
+		args_error(&a, "-tol goes with -method fmm");
+	if (o->tol >= 0 && o->dense)
+		args_error(&a, "-tol and -dense exclude each other (-dense writes every triangle)");
 	if (o->xcheck && o->method == METHOD_FMM)
 		args_error(&a, "-xcheck compares the ray-string run with fast marching: not with -method fmm");
 	/* fast marching by default resolves the standing waves in z */
@@ -406,7 +416,7 @@ static void run_fmm(const struct ratefile *r, const struct rfield *f,
 	double *times = print_times(o, &n);
 	/* -last: only the final set is written */
 	int first = o->last ? n - 1 : 0;
-	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d, o->dense);
+	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d, o->dense, o->tol);
 	if (o->cut_axis >= 0 && o->outcut) {
 		/* bounds as the ray-string cut: the other axis' range, then z */
 		int other = 1 - o->cut_axis;

@@ -348,8 +348,8 @@ static void test_surface(void)
 	CHECK(st.nzmax < -1 + 1e-9, "t = 0: a normal points up");
 
 	const double times[3] = {0, 0.5, 3};
-	fmm_write_curves(f, times, 3, "c.plot", "c.plot.2D", 0);
-	fmm_write_curves(f, times, 3, "d.plot", "d.plot.2D", 0);
+	fmm_write_curves(f, times, 3, "c.plot", "c.plot.2D", 0, FMM_TOL_AUTO);
+	fmm_write_curves(f, times, 3, "d.plot", "d.plot.2D", 0, FMM_TOL_AUTO);
 	CHECK(same_file("c.plot", "d.plot") && same_file("c.plot.2D", "d.plot.2D"),
 	      "rewriting gave different bytes");
 	struct plot_file *p3 = fmt_plot_read("c.plot", 3), *p2 = fmt_plot_read("c.plot.2D", 2);
@@ -512,7 +512,7 @@ static int curves(int argc, char **argv)
 	char *p2 = xmalloc(len + 4);
 	memcpy(p2, argv[4], len);
 	memcpy(p2 + len, ".2D", 4);
-	fmm_write_curves(f, t, nt, argv[4], p2, 1);
+	fmm_write_curves(f, t, nt, argv[4], p2, 1, 0);
 	free(p2);
 	free(t);
 	fmm_free(f);

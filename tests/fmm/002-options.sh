@@ -3,7 +3,8 @@
 # marching from a plane: T is linear; tolerance 1e-9), with the same
 # bounds line as the ray-string engine's curves.cut; -refine 2 and
 # -refine 1 1 3 and auto give the same flat front; -refine without
-# -method fmm, or out of range, is a usage error (exit 2).
+# -method fmm, or out of range, is a usage error (exit 2); so are -tol
+# without -method fmm, -tol with -dense and a negative -tol.
 . "$TOP/tests/lib/common.sh"
 "$BUILD/tests/lib/mkrate" -o u.bin 5 4 11 -1 1 -1 1 -1 0 1 || fail "mkrate failed"
 for r in "" "-refine 2" "-refine 1 1 3" "-refine auto"; do
@@ -20,4 +21,7 @@ done
 etch -refine 2 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-refine without fmm: expected exit 2"
 etch -method fmm -refine 0 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-refine 0: expected exit 2"
 etch -method fmm -refine 65 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-refine 65: expected exit 2"
+etch -tol 0.001 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-tol without fmm: expected exit 2"
+etch -method fmm -dense -tol 0.001 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-tol with -dense: expected exit 2"
+etch -method fmm -tol -1 -et 1 u.bin >/dev/null 2>&1; [ $? -eq 2 ] || fail "-tol -1: expected exit 2"
 exit 0

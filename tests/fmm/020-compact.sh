@@ -27,7 +27,7 @@ splat -q -o image.cont mask.in || fail "splat"
 for d in 80 40; do
 	sed "s/^grid nz .*/grid nz 60/; s/^dose .*/dose $d/" "$E/resist.in" >r$d.in
 	bleach -q -o r$d.bin image.cont r$d.in || fail "bleach (dose $d)"
-	etch -q -et 20 -pt 5 -method fmm -o c$d.plot r$d.bin || fail "etch -method fmm ($d)"
+	etch -q -et 20 -pt 5 -method fmm -tol 0 -o c$d.plot r$d.bin || fail "etch -method fmm ($d)"
 	etch -q -et 20 -pt 5 -method fmm -dense -o d$d.plot r$d.bin || fail "etch -method fmm -dense ($d)"
 	$X surfstat c$d.plot >c$d.txt || fail "surfstat c$d.plot"
 	$X surfstat d$d.plot >d$d.txt || fail "surfstat d$d.plot"

@@ -1,0 +1,973 @@
+/*
+ * tri_decimate.c - half-edge collapse decimation under a quadric error
+ * bound (tri_decimate.h).
+ *
+ * Shape: the soup is welded through a hash of tol-sized bins (a point is
+ * looked up in the 27 bins around it, so two points within the weld
+ * distance always meet), then each vertex keeps the list of its corners
+ * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
+ * corners to v and splices them into v's list, dead corners are skipped
+ * where the lists are read.  Every vertex has at most one entry in a
+ * binary heap, updated in place: its cheapest collapse by the cost and
+ * the box and boundary rules, keyed (cost, vertex); after a collapse
+ * u -> v, v and its neighbours are re-evaluated (their triangles or
+ * their targets' quadrics changed).  A popped collapse is checked in full
+ * before it is made (one that fails re-ranks its vertex by every check),
+ * so the order can only miss a collapse that became valid late, never
+ * make an invalid one.
+ *
+ * Vertices whose edges are not all two-sided and consistently oriented,
+ * or one-sided off the box (a crack where iso.h dropped a degenerate
+ * triangle), never move and never absorb.  A one-sided (boundary) vertex
+ * on the box moves only along a boundary edge.
+ */
+#include "tri_decimate.h"
+#include "util.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct cand;
+
+struct mesh {
+	size_t nv, nt;
+	double *p;              /* 3 per vertex */
+	double *q;              /* quadric, 10 per vertex: aa ab ac ad bb bc bd cc cd dd */
+	unsigned char *face;    /* box faces a vertex lies on, bit f for bounds[f] */
+	unsigned char *flag;    /* F_* */
+	int *tv;                /* 3 vertex per triangle, -1: dead triangle */
+	long *head, *next;      /* corner lists: head per vertex, next per corner */
+	double tol, tol2;
+	int *thead;             /* per triangle: the first input vertex it answers for */
+	int *pnext;             /* per vertex: the next one of the same triangle */
+	int *otv;               /* the input triangles (welded) */
+	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
+	float *osph;            /* per input triangle: a bounding sphere, centre
+				 * and radius (rounded outwards) */
+	/* scratch */
+	long *star;
+	int *pts;
+	size_t cstar, cpts, nstar, npts;
+	int *nbr;
+	size_t cnbr;
+	size_t *phint, cphint;
+	struct cand *cands;
+	size_t ccands;
+	unsigned *mark;
+	unsigned stamp;
+	int *cnt;               /* per vertex: triangles shared with consider's u */
+	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
+				 * consider(u, 0) would give now */
+	int *ring, *ring2;
+	size_t cring, cring2;
+};
+
+enum { F_LOCKED = 1, F_BOUNDARY = 2, F_DEAD = 4 };
+
+/* ---- welding ---- */
+
+static uint64_t bin_hash(int64_t a, int64_t b, int64_t c)
+{
+	uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15u ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Fu ^
+		     (uint64_t)c * 0x165667B19E3779F9u;
+	return h ^ (h >> 29);
+}
+
+static void bin_of(const double *x, double cell, int64_t b[3])
+{
+	for (int d = 0; d < 3; d++)
+		b[d] = (int64_t)floor(x[d] / cell);
+}
+
+static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
+{
+	/* a table of vertex numbers, at most half full (3n vertices if no
+	 * two triangles share one; a closed surface has about n/2) */
+	size_t cap = 16, pcap = 0;
+	while (cap < 6 * n + 16)
+		cap *= 2;
+	int *tab = xreallocarray(NULL, cap, sizeof *tab);
+	for (size_t i = 0; i < cap; i++)
+		tab[i] = -1;
+	m->p = NULL;
+	m->tv = xreallocarray(NULL, 3 * n + 1, sizeof *m->tv);
+	/* bins much larger than eps (still far smaller than the triangles):
+	 * the neighbouring bins are searched only along the axes where the
+	 * point lies within eps of its bin's side */
+	double cell = eps > 0 ? 1024 * eps : 1e-300;
+	size_t nv = 0;
+	for (size_t c = 0; c < 3 * n; c++) {
+		const double *x = v + 3 * c;
+		int64_t b[3];
+		bin_of(x, cell, b);
+		int lo[3], hi[3];
+		for (int d = 0; d < 3; d++) {
+			lo[d] = floor((x[d] - eps) / cell) < (double)b[d] ? -1 : 0;
+			hi[d] = floor((x[d] + eps) / cell) > (double)b[d] ? 1 : 0;
+		}
+		int found = -1;
+		for (int dz = lo[2]; dz <= hi[2]; dz++)
+			for (int dy = lo[1]; dy <= hi[1]; dy++)
+				for (int dx = lo[0]; dx <= hi[0]; dx++) {
+					int64_t k[3] = {b[0] + dx, b[1] + dy, b[2] + dz};
+					size_t s = bin_hash(k[0], k[1], k[2]) & (cap - 1);
+					for (; tab[s] >= 0; s = (s + 1) & (cap - 1)) {
+						int w = tab[s];
+						const double *y = m->p + 3 * (size_t)w;
+						int64_t bw[3];
+						bin_of(y, cell, bw);
+						if (bw[0] != k[0] || bw[1] != k[1] || bw[2] != k[2])
+							continue;
+						if (fabs(y[0] - x[0]) <= eps && fabs(y[1] - x[1]) <= eps &&
+						    fabs(y[2] - x[2]) <= eps && (found < 0 || w < found))
+							found = w;
+					}
+				}
+		if (found < 0) {
+			found = (int)nv;
+			xgrow(&m->p, &pcap, 3 * (nv + 1), sizeof *m->p);
+			memcpy(m->p + 3 * nv, x, 3 * sizeof *x);
+			size_t s = bin_hash(b[0], b[1], b[2]) & (cap - 1);
+			while (tab[s] >= 0)
+				s = (s + 1) & (cap - 1);
+			tab[s] = found;
+			nv++;
+		}
+		m->tv[c] = found;
+	}
+	free(tab);
+	return nv;
+}
+
+/* ---- geometry ---- */
+
+static void sub(const double *a, const double *b, double *c)
+{
+	for (int d = 0; d < 3; d++)
+		c[d] = a[d] - b[d];
+}
+
+static void cross(const double *a, const double *b, double *c)
+{
+	c[0] = a[1] * b[2] - a[2] * b[1];
+	c[1] = a[2] * b[0] - a[0] * b[2];
+	c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double *a, const double *b)
+{
+	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* twice the area vector of a b c */
+static void normal(const double *a, const double *b, const double *c, double *n)
+{
+	double u[3], w[3];
+	sub(b, a, u);
+	sub(c, a, w);
+	cross(u, w, n);
+}
+
+static double quality(const double *a, const double *b, const double *c)
+{
+	double n[3], u[3], w[3], x[3];
+	normal(a, b, c, n);
+	sub(b, a, u);
+	sub(c, b, w);
+	sub(a, c, x);
+	double s = dot(u, u) + dot(w, w) + dot(x, x);
+	return s > 0 ? 2 * sqrt(3.0) * sqrt(dot(n, n)) / s : 0;
+}
+
+/* adds the plane through p with unit normal n */
+static void q_add_plane(double *q, const double *n, const double *p)
+{
+	double d = -dot(n, p);
+	double e[4] = {n[0], n[1], n[2], d};
+	int k = 0;
+	for (int i = 0; i < 4; i++)
+		for (int j = i; j < 4; j++)
+			q[k++] += e[i] * e[j];
+}
+
+/* (qa + qb)(p): the sum of squared distances of p to their planes */
+static double q_eval(const double *qa, const double *qb, const double *p)
+{
+	double e[4] = {p[0], p[1], p[2], 1}, s = 0;
+	int k = 0;
+	for (int i = 0; i < 4; i++)
+		for (int j = i; j < 4; j++, k++)
+			s += (i == j ? 1 : 2) * (qa[k] + qb[k]) * e[i] * e[j];
+	return s > 0 ? s : 0;
+}
+
+/* ---- topology ---- */
+
+/* the distinct neighbours of x into *r, marked with the current stamp */
+static size_t ring_of(struct mesh *m, int x, int **r, size_t *cap)
+{
+	m->stamp++;
+	size_t k = 0;
+	for (long c = m->head[x]; c >= 0; c = m->next[c]) {
+		long t = c / 3;
+		if (m->tv[3 * t] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			int w = m->tv[3 * t + s];
+			if (w == x || m->mark[w] == m->stamp)
+				continue;
+			m->mark[w] = m->stamp;
+			xgrow(r, cap, k + 1, sizeof **r);
+			(*r)[k++] = w;
+		}
+	}
+	return k;
+}
+
+/* ring_of, and the triangles x shares with each neighbour w in
+ * m->cnt[w] */
+static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
+{
+	m->stamp++;
+	size_t k = 0;
+	for (long c = m->head[x]; c >= 0; c = m->next[c]) {
+		long t = c / 3;
+		if (m->tv[3 * t] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			int w = m->tv[3 * t + s];
+			if (w == x)
+				continue;
+			if (m->mark[w] != m->stamp) {
+				m->mark[w] = m->stamp;
+				m->cnt[w] = 0;
+				xgrow(r, cap, k + 1, sizeof **r);
+				(*r)[k++] = w;
+			}
+			m->cnt[w]++;
+		}
+	}
+	return k;
+}
+
+/* the live triangles holding both u and v, and their third vertices */
+static int shared(const struct mesh *m, int u, int v, int opp[2])
+{
+	int k = 0;
+	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
+		long t = c / 3;
+		const int *tv = m->tv + 3 * t;
+		if (tv[0] < 0 || (tv[0] != v && tv[1] != v && tv[2] != v))
+			continue;
+		if (k < 2)
+			opp[k] = tv[0] + tv[1] + tv[2] - u - v;
+		k++;
+	}
+	return k;
+}
+
+/* whether collapsing u onto v is allowed, its cost in *cost; without
+ * full only the box, the boundary and the cost are checked (the heap's
+ * order), with full the topology, orientation and shape too (the
+ * input vertices and samples are points_ok's) */
+/* the checks of the heap's order: the box, the boundary (ns: the
+ * triangles holding u and v) and the cost */
+static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
+{
+	if ((m->face[u] & ~m->face[v]) || (m->flag[v] & F_LOCKED))
+		return 0;
+	if (m->flag[u] & F_BOUNDARY) {
+		if (ns != 1)    /* a boundary vertex moves along the boundary only */
+			return 0;
+	} else if (ns != 2)
+		return 0;
+	double c = q_eval(m->q + 10 * (size_t)u, m->q + 10 * (size_t)v, m->p + 3 * (size_t)v);
+	if (!(c <= m->tol2))
+		return 0;
+	*cost = c;
+	return 1;
+}
+
+static int valid(struct mesh *m, int u, int v, double *cost, int full)
+{
+	int opp[2];
+	int ns = shared(m, u, v, opp);
+	double c;
+	if (!valid_cheap(m, u, v, ns, &c))
+		return 0;
+	*cost = c;
+	if (!full)
+		return 1;
+	/* link condition: the common neighbours are the opposite vertices */
+	size_t nu = ring_of(m, u, &m->ring, &m->cring);
+	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
+	m->stamp++;
+	for (size_t k = 0; k < nu; k++)
+		m->mark[m->ring[k]] = m->stamp;
+	int common = 0;
+	for (size_t k = 0; k < nvr; k++) {
+		int w = m->ring2[k];
+		if (m->mark[w] != m->stamp)
+			continue;
+		if (w != opp[0] && (ns < 2 || w != opp[1]))
+			return 0;
+		common++;
+	}
+	if (common != ns)
+		return 0;
+	if (ns == 2 && nu == 3 && nvr == 3)
+		return 0;       /* a tetrahedron would fold flat */
+	/* no flip, no new sliver */
+	const double *pv = m->p + 3 * (size_t)v;
+	for (long c2 = m->head[u]; c2 >= 0; c2 = m->next[c2]) {
+		long t = c2 / 3;
+		const int *tv = m->tv + 3 * t;
+		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
+			continue;
+		const double *a[3], *b[3];
+		for (int s = 0; s < 3; s++) {
+			a[s] = m->p + 3 * (size_t)tv[s];
+			b[s] = tv[s] == u ? pv : a[s];
+		}
+		double n0[3], n1[3];
+		normal(a[0], a[1], a[2], n0);
+		normal(b[0], b[1], b[2], n1);
+		if (!(dot(n0, n1) > 0))
+			return 0;
+		double q1 = quality(b[0], b[1], b[2]);
+		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
+			return 0;
+	}
+	*cost = c;
+	return 1;
+}
+
+/* ---- the input vertices' distance to the surface ---- */
+
+/* distance from p to triangle a b c: the nearest point is in the face,
+ * on an edge or a vertex (Ericson, Real-Time Collision Detection 5.1.5) */
+static double point_tri(const double *p, const double *a, const double *b, const double *c)
+{
+	double ab[3], ac[3], ap[3], bp[3], cp[3], q[3];
+	sub(b, a, ab);
+	sub(c, a, ac);
+	sub(p, a, ap);
+	sub(p, b, bp);
+	sub(p, c, cp);
+	double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp);
+	double d5 = dot(ab, cp), d6 = dot(ac, cp);
+	double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+	if (d1 <= 0 && d2 <= 0)
+		memcpy(q, a, sizeof q);
+	else if (d3 >= 0 && d4 <= d3)
+		memcpy(q, b, sizeof q);
+	else if (d6 >= 0 && d5 <= d6)
+		memcpy(q, c, sizeof q);
+	else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+		for (int d = 0; d < 3; d++)
+			q[d] = a[d] + d1 / (d1 - d3) * ab[d];
+	else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+		for (int d = 0; d < 3; d++)
+			q[d] = a[d] + d2 / (d2 - d6) * ac[d];
+	else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+		double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+		for (int d = 0; d < 3; d++)
+			q[d] = b[d] + w * (c[d] - b[d]);
+	} else {
+		double den = va + vb + vc;
+		for (int d = 0; d < 3; d++)
+			q[d] = a[d] + (ab[d] * vb + ac[d] * vc) / den;
+	}
+	double r[3];
+	sub(p, q, r);
+	return sqrt(dot(r, r));
+}
+
+/* u's live triangles into m->star, and the input vertices they answer
+ * for, u included, into m->pts */
+static void gather(struct mesh *m, int u)
+{
+	m->nstar = m->npts = 0;
+	xgrow(&m->pts, &m->cpts, 1, sizeof *m->pts);
+	xgrow(&m->phint, &m->cphint, 1, sizeof *m->phint);
+	m->phint[0] = 0;
+	m->pts[m->npts++] = u;
+	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
+		long t = c / 3;
+		if (m->tv[3 * t] < 0)
+			continue;
+		xgrow(&m->star, &m->cstar, m->nstar + 1, sizeof *m->star);
+		m->star[m->nstar++] = t;
+		for (int w = m->thead[t]; w >= 0; w = m->pnext[w]) {
+			xgrow(&m->pts, &m->cpts, m->npts + 1, sizeof *m->pts);
+			xgrow(&m->phint, &m->cphint, m->npts + 1, sizeof *m->phint);
+			m->phint[m->npts] = m->nstar - 1;
+			m->pts[m->npts++] = w;
+		}
+	}
+}
+
+/* the star's triangle nearest to input vertex w once u is on v (-1: none
+ * within tol); with any, the first within tol, from the star's
+ * triangle number hint on (the one w belonged to) */
+static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist, int any,
+			size_t hint)
+{
+	long best = -1;
+	double bd = m->tol;
+	const double *p = m->p + 3 * (size_t)w;
+	for (size_t k0 = 0; k0 < m->nstar; k0++) {
+		size_t k = (k0 + hint) % m->nstar;
+		if (any && best >= 0)
+			break;
+		const int *tv = m->tv + 3 * m->star[k];
+		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
+			continue;
+		const double *a[3];
+		for (int s2 = 0; s2 < 3; s2++)
+			a[s2] = m->p + 3 * (size_t)(tv[s2] == u ? v : tv[s2]);
+		double d = point_tri(p, a[0], a[1], a[2]);
+		if (d <= bd) {
+			bd = d;
+			best = m->star[k];
+		}
+	}
+	*dist = bd;
+	return best;
+}
+
+/* whether q is within tol of input triangle t */
+static int near_one(const struct mesh *m, const double *q, size_t t)
+{
+	const int *o = m->otv + 3 * t;
+	const float *b = m->osph + 4 * t;
+	double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
+	double r = b[3] + m->tol;
+	if (dot(e, e) > r * r)
+		return 0;       /* its bounding sphere is too far */
+	return point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1], m->p + 3 * (size_t)o[2]) <=
+	       m->tol;
+}
+
+/* the i-th vertex whose input triangles the samples are checked
+ * against (after gather): the tracked input vertices, then the corners
+ * of the star once u is on v */
+static int set_vertex(const struct mesh *m, int u, int v, size_t i)
+{
+	if (i < m->npts)
+		return m->pts[i];
+	i -= m->npts;
+	int w = m->tv[3 * m->star[i / 3] + i % 3];
+	return w == u ? v : w;
+}
+
+/* whether, once u is on v, every input vertex u's star answers for stays
+ * within tol of the star, and the star's points on the barycentric grid
+ * of step 1/TRI_DECIMATE_SAMPLES within tol of the input triangles
+ * around them */
+static int points_ok(struct mesh *m, int u, int v)
+{
+	gather(m, u);
+	for (size_t i = 0; i < m->npts; i++) {
+		double d;
+		if (nearest_new(m, u, v, m->pts[i], &d, 1, m->phint[i]) < 0)
+			return 0;
+	}
+	/* the set of input triangles the samples are checked against: those
+	 * of the tracked input vertices and of the new star's corners, read
+	 * where they are (whether any is within tol does not depend on the
+	 * order, nor on a triangle being tried twice) */
+	long last = -1;
+	for (size_t i = 0; i < m->npts + 3 * m->nstar && last < 0; i++) {
+		int w = set_vertex(m, u, v, i);
+		if (m->ostart[w] < m->ostart[w + 1])
+			last = (long)m->otri[m->ostart[w]];
+	}
+	if (last < 0)
+		return 0;
+	enum { S = TRI_DECIMATE_SAMPLES };
+	for (size_t k = 0; k < m->nstar; k++) {
+		const int *tv = m->tv + 3 * m->star[k];
+		if (tv[0] == v || tv[1] == v || tv[2] == v)
+			continue;
+		const double *a[3];
+		for (int s2 = 0; s2 < 3; s2++)
+			a[s2] = m->p + 3 * (size_t)(tv[s2] == u ? v : tv[s2]);
+		for (int i = 0; i <= S; i++)
+			for (int j = 0; i + j <= S; j++) {
+				if (i == S || j == S || i + j == 0)
+					continue;       /* the corners are input vertices */
+				double x = (double)i / S, y = (double)j / S, q[3];
+				for (int d = 0; d < 3; d++)
+					q[d] = (1 - x - y) * a[0][d] + x * a[1][d] + y * a[2][d];
+				/* the triangle that held the last sample first (the
+				 * samples are near each other), then the set from
+				 * its start (the triangles around u) */
+				if (near_one(m, q, (size_t)last))
+					continue;
+				int near = 0;
+				for (size_t i2 = 0; i2 < m->npts + 3 * m->nstar && !near; i2++) {
+					int w = set_vertex(m, u, v, i2);
+					for (size_t k2 = m->ostart[w]; k2 < m->ostart[w + 1]; k2++)
+						if (near_one(m, q, m->otri[k2])) {
+							near = 1;
+							last = (long)m->otri[k2];
+							break;
+						}
+				}
+				if (!near)
+					return 0;
+			}
+	}
+	return 1;
+}
+
+/* ---- heap of (cost, vertex): one entry per vertex, updated in place
+ * (a heap of stale entries grows to ten per collapse, and its pops miss
+ * the cache on a million-vertex tile) ---- */
+
+struct entry {
+	double cost;
+	int u, v;
+};
+
+struct heap {
+	struct entry *e;
+	size_t n, cap;
+	long *pos;              /* per vertex: its entry's index, -1: none */
+};
+
+static int before(const struct entry *a, const struct entry *b)
+{
+	return a->cost < b->cost || (a->cost == b->cost && a->u < b->u);
+}
+
+static void heap_place(struct heap *h, size_t i, struct entry x)
+{
+	h->e[i] = x;
+	h->pos[x.u] = (long)i;
+}
+
+static void sift_up(struct heap *h, size_t i, struct entry x)
+{
+	while (i > 0 && before(&x, &h->e[(i - 1) / 2])) {
+		heap_place(h, i, h->e[(i - 1) / 2]);
+		i = (i - 1) / 2;
+	}
+	heap_place(h, i, x);
+}
+
+static void sift_down(struct heap *h, size_t i, struct entry x)
+{
+	for (;;) {
+		size_t c = 2 * i + 1;
+		if (c >= h->n)
+			break;
+		if (c + 1 < h->n && before(&h->e[c + 1], &h->e[c]))
+			c++;
+		if (!before(&h->e[c], &x))
+			break;
+		heap_place(h, i, h->e[c]);
+		i = c;
+	}
+	heap_place(h, i, x);
+}
+
+/* u's entry set to x (x.u == u), added if it had none */
+static void heap_set(struct heap *h, struct entry x)
+{
+	long p = h->pos[x.u];
+	if (p < 0) {
+		xgrow(&h->e, &h->cap, h->n + 1, sizeof *h->e);
+		sift_up(h, h->n++, x);
+	} else if (before(&x, &h->e[p]))
+		sift_up(h, (size_t)p, x);
+	else
+		sift_down(h, (size_t)p, x);
+}
+
+static void heap_remove(struct heap *h, int u)
+{
+	long p = h->pos[u];
+	if (p < 0)
+		return;
+	h->pos[u] = -1;
+	struct entry x = h->e[--h->n];
+	if ((size_t)p == h->n)
+		return;
+	if (before(&x, &h->e[p]))
+		sift_up(h, (size_t)p, x);
+	else
+		sift_down(h, (size_t)p, x);
+}
+
+static struct entry heap_pop(struct heap *h)
+{
+	struct entry top = h->e[0];
+	heap_remove(h, top.u);
+	return top;
+}
+
+struct cand {
+	double cost;
+	int v;
+};
+
+static int cand_cmp(const void *a, const void *b)
+{
+	const struct cand *p = a, *q = b;
+	if (p->cost != q->cost)
+		return p->cost < q->cost ? -1 : 1;
+	return (p->v > q->v) - (p->v < q->v);
+}
+
+/* pushes u's cheapest collapse: with full 0 the cheapest by the cost
+ * alone (checked in full when popped), 1 the cheapest that passes the
+ * topology and shape checks (valid), 2 the cheapest that passes every
+ * check (valid and points_ok) */
+static void consider(struct mesh *m, struct heap *h, int u, int full)
+{
+	m->exact[u] = full == 0;
+	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
+		heap_remove(h, u);
+		return;
+	}
+	size_t k = ring_cnt(m, u, &m->nbr, &m->cnbr), nc = 0;
+	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
+	for (size_t i = 0; i < k; i++) {
+		double c;
+		int w = m->nbr[i];
+		if (valid_cheap(m, u, w, m->cnt[w], &c))
+			m->cands[nc++] = (struct cand){c, w};
+	}
+	if (nc == 0) {
+		heap_remove(h, u);
+		return;
+	}
+	if (!full) {
+		struct cand b = m->cands[0];
+		for (size_t i = 1; i < nc; i++)
+			if (cand_cmp(&m->cands[i], &b) < 0)
+				b = m->cands[i];
+		heap_set(h, (struct entry){b.cost, u, b.v});
+		return;
+	}
+	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
+	for (size_t i = 0; i < nc; i++) {
+		double c;
+		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
+			heap_set(h, (struct entry){c, u, m->cands[i].v});
+			return;
+		}
+	}
+	heap_remove(h, u);
+}
+
+static void collapse(struct mesh *m, int u, int v)
+{
+	gather(m, u);
+	/* the input vertices go to the nearest triangle of the new star */
+	long *own = xreallocarray(NULL, m->npts + 1, sizeof *own);
+	for (size_t i = 0; i < m->npts; i++) {
+		double d;
+		own[i] = nearest_new(m, u, v, m->pts[i], &d, 0, 0);
+	}
+	for (size_t k = 0; k < m->nstar; k++)
+		m->thead[m->star[k]] = -1;
+	for (size_t i = m->npts; i-- > 0;)
+		if (own[i] >= 0) {
+			m->pnext[m->pts[i]] = m->thead[own[i]];
+			m->thead[own[i]] = m->pts[i];
+		}
+	free(own);
+	long c = m->head[u];
+	while (c >= 0) {
+		long nx = m->next[c], t = c / 3;
+		int *tv = m->tv + 3 * t;
+		if (tv[0] >= 0) {
+			if (tv[0] == v || tv[1] == v || tv[2] == v)
+				tv[0] = tv[1] = tv[2] = -1;
+			else {
+				tv[c % 3] = v;
+				m->next[c] = m->head[v];
+				m->head[v] = c;
+			}
+		}
+		c = nx;
+	}
+	m->head[u] = -1;
+	m->flag[u] |= F_DEAD;
+	/* v's list without its dead corners (they would pile up on the
+	 * vertices that absorb many) */
+	long *pc = &m->head[v];
+	while (*pc >= 0) {
+		if (m->tv[3 * (*pc / 3)] < 0)
+			*pc = m->next[*pc];
+		else
+			pc = &m->next[*pc];
+	}
+	for (int k = 0; k < 10; k++)
+		m->q[10 * (size_t)v + k] += m->q[10 * (size_t)u + k];
+}
+
+/* ---- edges at setup ---- */
+
+struct hedge {
+	int a, b;               /* a < b */
+	int dir;                /* +1: a -> b in its triangle, -1: b -> a */
+	long t;
+};
+
+static int hedge_cmp(const void *x, const void *y)
+{
+	const struct hedge *p = x, *q = y;
+	if (p->a != q->a)
+		return p->a < q->a ? -1 : 1;
+	if (p->b != q->b)
+		return p->b < q->b ? -1 : 1;
+	return (p->t > q->t) - (p->t < q->t);
+}
+
+static void classify(struct mesh *m, struct tri_decimate_stats *st)
+{
+	size_t ne = 0;
+	struct hedge *e = xreallocarray(NULL, 3 * m->nt + 1, sizeof *e);
+	for (size_t t = 0; t < m->nt; t++)
+		for (int s = 0; s < 3; s++) {
+			int a = m->tv[3 * t + s], b = m->tv[3 * t + (s + 1) % 3];
+			e[ne++] = a < b ? (struct hedge){a, b, 1, (long)t} : (struct hedge){b, a, -1, (long)t};
+		}
+	qsort(e, ne, sizeof *e, hedge_cmp);
+	int *nb = xcalloc(m->nv + 1, sizeof *nb);
+	for (size_t i = 0; i < ne;) {
+		size_t j = i;
+		while (j < ne && e[j].a == e[i].a && e[j].b == e[i].b)
+			j++;
+		int a = e[i].a, b = e[i].b;
+		if (j - i == 1) {
+			st->boundary_edges++;
+			nb[a]++;
+			nb[b]++;
+			m->flag[a] |= F_BOUNDARY;
+			m->flag[b] |= F_BOUNDARY;
+			if (!(m->face[a] & m->face[b])) {
+				/* a crack off the box, or a boundary leaving a face */
+				m->flag[a] |= F_LOCKED;
+				m->flag[b] |= F_LOCKED;
+			}
+			/* the plane through the edge normal to its triangle */
+			const int *tv = m->tv + 3 * e[i].t;
+			double n[3], d[3], w[3];
+			normal(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1], m->p + 3 * (size_t)tv[2], n);
+			sub(m->p + 3 * (size_t)b, m->p + 3 * (size_t)a, d);
+			cross(n, d, w);
+			double l = sqrt(dot(w, w));
+			if (l > 0) {
+				for (int k = 0; k < 3; k++)
+					w[k] /= l;
+				q_add_plane(m->q + 10 * (size_t)a, w, m->p + 3 * (size_t)a);
+				q_add_plane(m->q + 10 * (size_t)b, w, m->p + 3 * (size_t)a);
+			}
+		} else if (j - i > 2 || e[i].dir == e[i + 1].dir) {
+			m->flag[a] |= F_LOCKED;
+			m->flag[b] |= F_LOCKED;
+		}
+		i = j;
+	}
+	free(e);
+	/* a boundary vertex needs exactly two boundary edges to slide on */
+	for (size_t i = 0; i < m->nv; i++)
+		if (nb[i] != 0 && nb[i] != 2)
+			m->flag[i] |= F_LOCKED;
+	free(nb);
+}
+
+size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+{
+	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
+	struct mesh m = {0};
+	m.nv = weld(&m, v, n, weld_eps);
+	/* drop the triangles welding made degenerate */
+	size_t nt = 0;
+	for (size_t t = 0; t < n; t++) {
+		int *a = m.tv + 3 * t;
+		if (a[0] == a[1] || a[1] == a[2] || a[0] == a[2])
+			continue;
+		memmove(m.tv + 3 * nt, a, 3 * sizeof *a);
+		nt++;
+	}
+	m.nt = nt;
+	st.vertices = m.nv;
+	st.in = nt;
+	m.q = xcalloc(10 * m.nv + 1, sizeof *m.q);
+	m.face = xcalloc(m.nv + 1, 1);
+	m.flag = xcalloc(m.nv + 1, 1);
+	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
+	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
+	m.exact = xcalloc(m.nv + 1, 1);
+	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
+	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
+	m.tol = tol;
+	m.otv = xreallocarray(NULL, 3 * nt + 1, sizeof *m.otv);
+	memcpy(m.otv, m.tv, 3 * nt * sizeof *m.otv);
+	m.ostart = xcalloc(m.nv + 2, sizeof *m.ostart);
+	m.otri = xreallocarray(NULL, 3 * nt + 1, sizeof *m.otri);
+	m.osph = xreallocarray(NULL, 4 * nt + 1, sizeof *m.osph);
+	for (size_t t = 0; t < nt; t++) {
+		const int *a = m.tv + 3 * t;
+		float *b = m.osph + 4 * t;
+		double r = 0;
+		for (int d = 0; d < 3; d++)
+			b[d] = (float)((m.p[3 * (size_t)a[0] + d] + m.p[3 * (size_t)a[1] + d] +
+					m.p[3 * (size_t)a[2] + d]) / 3);
+		for (int s2 = 0; s2 < 3; s2++) {
+			const double *x = m.p + 3 * (size_t)a[s2];
+			double e[3] = {x[0] - b[0], x[1] - b[1], x[2] - b[2]};
+			r = fmax(r, sqrt(dot(e, e)));
+		}
+		/* float rounding of the centre and radius: a relative 1e-6 of
+		 * the coordinates more keeps the sphere around the triangle */
+		double mag = fabs(b[0]) + fabs(b[1]) + fabs(b[2]) + r;
+		b[3] = (float)(r + 1e-6 * mag);
+	}
+	for (size_t c = 0; c < 3 * nt; c++)
+		m.ostart[m.tv[c] + 2]++;
+	for (size_t i = 0; i < m.nv; i++)
+		m.ostart[i + 2] += m.ostart[i + 1];
+	for (size_t c = 0; c < 3 * nt; c++)
+		m.otri[m.ostart[m.tv[c] + 1]++] = c / 3;
+	m.tol2 = 0.5 * tol * tol;
+	m.thead = xreallocarray(NULL, nt + 1, sizeof *m.thead);
+	m.pnext = xreallocarray(NULL, m.nv + 1, sizeof *m.pnext);
+	for (size_t t = 0; t < nt; t++)
+		m.thead[t] = -1;
+	if (box)
+		for (size_t i = 0; i < m.nv; i++)
+			for (int f = 0; f < 6; f++)
+				if (fabs(m.p[3 * i + f / 2] - box[f]) <= box_eps)
+					m.face[i] |= (unsigned char)(1u << f);
+	if (keep)
+		for (size_t i = 0; i < m.nv; i++)
+			for (int f = 0; f < 4; f++)
+				if (fabs(m.p[3 * i + f / 2] - keep[f]) <= box_eps)
+					m.flag[i] |= F_LOCKED;
+	for (size_t i = 0; i < m.nv; i++)
+		m.head[i] = -1;
+	for (size_t c = 3 * nt; c-- > 0;) {
+		int w = m.tv[c];
+		m.next[c] = m.head[w];
+		m.head[w] = (long)c;
+	}
+	for (size_t t = 0; t < nt; t++) {
+		const int *a = m.tv + 3 * t;
+		double nn[3];
+		normal(m.p + 3 * (size_t)a[0], m.p + 3 * (size_t)a[1], m.p + 3 * (size_t)a[2], nn);
+		double l = sqrt(dot(nn, nn));
+		if (!(l > 0))
+			continue;
+		for (int k = 0; k < 3; k++)
+			nn[k] /= l;
+		for (int s = 0; s < 3; s++)
+			q_add_plane(m.q + 10 * (size_t)a[s], nn, m.p + 3 * (size_t)a[0]);
+	}
+	classify(&m, &st);
+	for (size_t i = 0; i < m.nv; i++)
+		if (m.flag[i] & F_LOCKED)
+			st.locked++;
+	if (tol > 0) {
+		struct heap h = {NULL, 0, 0, xreallocarray(NULL, m.nv + 1, sizeof *h.pos)};
+		for (size_t i = 0; i < m.nv; i++)
+			h.pos[i] = -1;
+		for (size_t i = 0; i < m.nv; i++)
+			consider(&m, &h, (int)i, 0);
+		int *nb = NULL, *nbc = NULL;
+		size_t cnb = 0, cnbc = 0;
+		while (h.n) {
+			struct entry e = heap_pop(&h);
+			m.exact[e.u] = 0;
+			double c;
+			/* a failed collapse re-ranks u by the checks it failed:
+			 * the topology and shape alone (the input checks, which
+			 * rarely fail, run when the new entry is popped), or
+			 * those and the input checks */
+			if (!valid(&m, e.u, e.v, &c, 1)) {
+				consider(&m, &h, e.u, 1);
+				continue;
+			}
+			if (!points_ok(&m, e.u, e.v)) {
+				consider(&m, &h, e.u, 2);
+				continue;
+			}
+			collapse(&m, e.u, e.v);
+			consider(&m, &h, e.v, 0);
+			/* v's neighbours: only their collapses onto v (v's
+			 * quadric and the triangles they share with it changed)
+			 * or onto u (gone) are not as they were, so one whose
+			 * entry is consider(, 0)'s and aims at neither needs
+			 * only its collapse onto v weighed against it (the
+			 * same entry as a full consider) */
+			size_t k = ring_cnt(&m, e.v, &nb, &cnb);
+			xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
+			for (size_t i = 0; i < k; i++)
+				nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+			for (size_t i = 0; i < k; i++) {
+				int w = nb[i];
+				long p = h.pos[w];
+				if (!m.exact[w] || (p >= 0 && (h.e[p].v == e.u || h.e[p].v == e.v))) {
+					consider(&m, &h, w, 0);
+					continue;
+				}
+				if (m.flag[w] & (F_LOCKED | F_DEAD))
+					continue;
+				if (!valid_cheap(&m, w, e.v, nbc[i], &c))
+					continue;
+				struct cand a = {c, e.v};
+				if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+					heap_set(&h, (struct entry){c, w, e.v});
+			}
+		}
+		free(nb);
+		free(nbc);
+		free(h.e);
+		free(h.pos);
+	}
+	size_t out = 0;
+	for (size_t t = 0; t < nt; t++) {
+		const int *a = m.tv + 3 * t;
+		if (a[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++)
+			memcpy(v + 9 * out + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
+		out++;
+	}
+	st.out = out;
+	if (stp)
+		*stp = st;
+	free(m.p);
+	free(m.q);
+	free(m.face);
+	free(m.flag);
+	free(m.mark);
+	free(m.cnt);
+	free(m.exact);
+	free(m.head);
+	free(m.next);
+	free(m.tv);
+	free(m.ring);
+	free(m.ring2);
+	free(m.thead);
+	free(m.nbr);
+	free(m.phint);
+	free(m.cands);
+	free(m.otv);
+	free(m.ostart);
+	free(m.otri);
+	free(m.osph);
+	free(m.pnext);
+	free(m.star);
+	free(m.pts);
+	return out;
+}
