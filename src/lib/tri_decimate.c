@@ -205,30 +205,10 @@ static double q_eval(const double *qa, const double *qb, const double *p)
 
 /* ---- topology ---- */
 
-/* the distinct neighbours of x into *r, marked with the current stamp */
-static size_t ring_of(struct mesh *m, int x, int **r, size_t *cap)
-{
-	m->stamp++;
-	size_t k = 0;
-	for (long c = m->head[x]; c >= 0; c = m->next[c]) {
-		long t = c / 3;
-		if (m->tv[3 * t] < 0)
-			continue;
-		for (int s = 0; s < 3; s++) {
-			int w = m->tv[3 * t + s];
-			if (w == x || m->mark[w] == m->stamp)
-				continue;
-			m->mark[w] = m->stamp;
-			xgrow(r, cap, k + 1, sizeof **r);
-			(*r)[k++] = w;
-		}
-	}
-	return k;
-}
-
-/* ring_of, and the triangles x shares with each neighbour w in
- * m->cnt[w] */
-static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
+/* the distinct neighbours of x into *r, marked with the current stamp;
+ * with count, also the triangles x shares with each neighbour w in
+ * m->cnt[w] (ring_cnt) */
+static size_t ring(struct mesh *m, int x, int **r, size_t *cap, int count)
 {
 	m->stamp++;
 	size_t k = 0;
@@ -242,14 +222,26 @@ static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
 				continue;
 			if (m->mark[w] != m->stamp) {
 				m->mark[w] = m->stamp;
-				m->cnt[w] = 0;
+				if (count)
+					m->cnt[w] = 0;
 				xgrow(r, cap, k + 1, sizeof **r);
 				(*r)[k++] = w;
 			}
-			m->cnt[w]++;
+			if (count)
+				m->cnt[w]++;
 		}
 	}
 	return k;
+}
+
+static size_t ring_of(struct mesh *m, int x, int **r, size_t *cap)
+{
+	return ring(m, x, r, cap, 0);
+}
+
+static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
+{
+	return ring(m, x, r, cap, 1);
 }
 
 /* the live triangles holding both u and v, and their third vertices */
