@@ -204,3 +204,49 @@ int surf_above(const struct surf *s, double x, double y, double z)
 	}
 	return n;
 }
+
+/* Closest point of triangle abc to p (Ericson, Real-Time Collision
+ * Detection, 5.1.5); returns the squared distance. */
+double surf_point_tri_dist2(const double p[3], const double *a, const double *b, const double *c)
+{
+	double ab[3], ac[3], ap[3], x[3];
+	for (int d = 0; d < 3; d++) {
+		ab[d] = b[d] - a[d];
+		ac[d] = c[d] - a[d];
+		ap[d] = p[d] - a[d];
+	}
+#define DOT(u, v) ((u)[0] * (v)[0] + (u)[1] * (v)[1] + (u)[2] * (v)[2])
+	double d1 = DOT(ab, ap), d2 = DOT(ac, ap);
+	double bp[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
+	double cp[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+	double d3 = DOT(ab, bp), d4 = DOT(ac, bp), d5 = DOT(ab, cp), d6 = DOT(ac, cp);
+#undef DOT
+	double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+	if (d1 <= 0 && d2 <= 0) {
+		memcpy(x, a, sizeof x);
+	} else if (d3 >= 0 && d4 <= d3) {
+		memcpy(x, b, sizeof x);
+	} else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+		double v = d1 / (d1 - d3);
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + v * ab[d];
+	} else if (d6 >= 0 && d5 <= d6) {
+		memcpy(x, c, sizeof x);
+	} else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+		double w = d2 / (d2 - d6);
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + w * ac[d];
+	} else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+		double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+		for (int d = 0; d < 3; d++)
+			x[d] = b[d] + w * (c[d] - b[d]);
+	} else {
+		double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
+		for (int d = 0; d < 3; d++)
+			x[d] = a[d] + v * ab[d] + w * ac[d];
+	}
+	double e = 0;
+	for (int d = 0; d < 3; d++)
+		e += (p[d] - x[d]) * (p[d] - x[d]);
+	return e;
+}

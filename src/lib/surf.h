@@ -103,4 +103,8 @@ long surf_crossings(const struct surf *s, long max);
  * than on the faces of the box: the gaps of the surface. */
 double surf_open_border(const struct surf *s);
 
+/* The squared distance from p to the closest point of triangle a b c,
+ * um^2 (Ericson, Real-Time Collision Detection, 5.1.5). */
+double surf_point_tri_dist2(const double p[3], const double *a, const double *b, const double *c);
+
 #endif

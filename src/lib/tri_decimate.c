@@ -22,6 +22,7 @@
  * on the box moves only along a boundary edge.
  */
 #include "tri_decimate.h"
+#include "surf.h"
 #include "util.h"
 
 #include <math.h>
@@ -338,43 +339,10 @@ static int valid(struct mesh *m, int u, int v, double *cost, int full)
 
 /* ---- the input vertices' distance to the surface ---- */
 
-/* distance from p to triangle a b c: the nearest point is in the face,
- * on an edge or a vertex (Ericson, Real-Time Collision Detection 5.1.5) */
+/* distance from p to triangle a b c */
 static double point_tri(const double *p, const double *a, const double *b, const double *c)
 {
-	double ab[3], ac[3], ap[3], bp[3], cp[3], q[3];
-	sub(b, a, ab);
-	sub(c, a, ac);
-	sub(p, a, ap);
-	sub(p, b, bp);
-	sub(p, c, cp);
-	double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp);
-	double d5 = dot(ab, cp), d6 = dot(ac, cp);
-	double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
-	if (d1 <= 0 && d2 <= 0)
-		memcpy(q, a, sizeof q);
-	else if (d3 >= 0 && d4 <= d3)
-		memcpy(q, b, sizeof q);
-	else if (d6 >= 0 && d5 <= d6)
-		memcpy(q, c, sizeof q);
-	else if (vc <= 0 && d1 >= 0 && d3 <= 0)
-		for (int d = 0; d < 3; d++)
-			q[d] = a[d] + d1 / (d1 - d3) * ab[d];
-	else if (vb <= 0 && d2 >= 0 && d6 <= 0)
-		for (int d = 0; d < 3; d++)
-			q[d] = a[d] + d2 / (d2 - d6) * ac[d];
-	else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-		double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-		for (int d = 0; d < 3; d++)
-			q[d] = b[d] + w * (c[d] - b[d]);
-	} else {
-		double den = va + vb + vc;
-		for (int d = 0; d < 3; d++)
-			q[d] = a[d] + (ab[d] * vb + ac[d] * vc) / den;
-	}
-	double r[3];
-	sub(p, q, r);
-	return sqrt(dot(r, r));
+	return sqrt(surf_point_tri_dist2(p, a, b, c));
 }
 
 /* u's live triangles into m->star, and the input vertices they answer
