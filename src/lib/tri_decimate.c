@@ -2,9 +2,9 @@
  * tri_decimate.c - half-edge collapse decimation under a quadric error
  * bound (tri_decimate.h).
  *
- * Shape: the soup is welded through a hash of tol-sized bins (a point is
- * looked up in the 27 bins around it, so two points within the weld
- * distance always meet), then each vertex keeps the list of its corners
+ * Shape: the soup is welded through a hash of bins 1024 weld distances
+ * wide (a point is looked up in its bin and in the neighbours it lies
+ * within the weld distance of, so two such points always meet), then each vertex keeps the list of its corners
  * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
  * corners to v and splices them into v's list, dead corners are skipped
  * where the lists are read.  Every vertex has at most one entry in a
@@ -261,10 +261,6 @@ static int shared(const struct mesh *m, int u, int v, int opp[2])
 	return k;
 }
 
-/* whether collapsing u onto v is allowed, its cost in *cost; without
- * full only the box, the boundary and the cost are checked (the heap's
- * order), with full the topology, orientation and shape too (the
- * input vertices and samples are points_ok's) */
 /* the checks of the heap's order: the box, the boundary (ns: the
  * triangles holding u and v) and the cost */
 static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
@@ -283,6 +279,10 @@ static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
 	return 1;
 }
 
+/* whether collapsing u onto v is allowed, its cost in *cost; without
+ * full only the box, the boundary and the cost are checked (the heap's
+ * order), with full the topology, orientation and shape too (the
+ * input vertices and samples are points_ok's) */
 static int valid(struct mesh *m, int u, int v, double *cost, int full)
 {
 	int opp[2];
@@ -333,7 +333,6 @@ static int valid(struct mesh *m, int u, int v, double *cost, int full)
 		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
 			return 0;
 	}
-	*cost = c;
 	return 1;
 }
 
