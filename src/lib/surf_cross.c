@@ -16,6 +16,7 @@
  */
 #include "surf.h"
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -26,33 +27,16 @@
  * any mesh spacing (nm at worst) and far above rounding (1e-16). */
 #define CROSS_EPS 1e-9
 
-static void sub(const double *a, const double *b, double *r)
-{
-	r[0] = a[0] - b[0], r[1] = a[1] - b[1], r[2] = a[2] - b[2];
-}
-
-static void cross(const double *a, const double *b, double *r)
-{
-	r[0] = a[1] * b[2] - a[2] * b[1];
-	r[1] = a[2] * b[0] - a[0] * b[2];
-	r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b)
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* 1 if segment p-q passes through the inside of triangle t (9 numbers),
  * whose normal n and |n|^2 are given; eps is the length tolerance. */
 static int seg_through(const double *p, const double *q, const double *t,
 		       const double *n, double nn, double eps)
 {
 	double ap[3], aq[3];
-	sub(p, t, ap);
-	sub(q, t, aq);
+	vec3_sub(p, t, ap);
+	vec3_sub(q, t, aq);
 	double len = sqrt(nn);
-	double dp = dot(n, ap) / len, dq = dot(n, aq) / len;
+	double dp = vec3_dot(n, ap) / len, dq = vec3_dot(n, aq) / len;
 	if (!((dp > eps && dq < -eps) || (dp < -eps && dq > eps)))
 		return 0;
 	double f = dp / (dp - dq), x[3];
@@ -61,12 +45,12 @@ static int seg_through(const double *p, const double *q, const double *t,
 	for (int k = 0; k < 3; k++) {
 		const double *a = t + 3 * k, *b = t + 3 * ((k + 1) % 3);
 		double ab[3], ax[3], c[3];
-		sub(b, a, ab);
-		sub(x, a, ax);
-		cross(ab, ax, c);
+		vec3_sub(b, a, ab);
+		vec3_sub(x, a, ax);
+		vec3_cross(ab, ax, c);
 		/* twice the area of (a, b, x) over twice the triangle's: the
 		 * barycentric weight of the opposite vertex */
-		if (dot(c, n) / nn <= CROSS_EPS)
+		if (vec3_dot(c, n) / nn <= CROSS_EPS)
 			return 0;
 	}
 	return 1;
@@ -84,13 +68,13 @@ static int share_vertex(const double *a, const double *b)
 static int tris_cross(const double *a, const double *b, double eps)
 {
 	double na[3], nb[3], e1[3], e2[3];
-	sub(a + 3, a, e1);
-	sub(a + 6, a, e2);
-	cross(e1, e2, na);
-	sub(b + 3, b, e1);
-	sub(b + 6, b, e2);
-	cross(e1, e2, nb);
-	double nna = dot(na, na), nnb = dot(nb, nb);
+	vec3_sub(a + 3, a, e1);
+	vec3_sub(a + 6, a, e2);
+	vec3_cross(e1, e2, na);
+	vec3_sub(b + 3, b, e1);
+	vec3_sub(b + 6, b, e2);
+	vec3_cross(e1, e2, nb);
+	double nna = vec3_dot(na, na), nnb = vec3_dot(nb, nb);
 	if (!(nna > 0) || !(nnb > 0))
 		return 0;
 	for (int k = 0; k < 3; k++) {

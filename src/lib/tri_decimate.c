@@ -24,6 +24,7 @@
 #include "tri_decimate.h"
 #include "surf.h"
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -144,48 +145,30 @@ static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
 
 /* ---- geometry ---- */
 
-static void sub(const double *a, const double *b, double *c)
-{
-	for (int d = 0; d < 3; d++)
-		c[d] = a[d] - b[d];
-}
-
-static void cross(const double *a, const double *b, double *c)
-{
-	c[0] = a[1] * b[2] - a[2] * b[1];
-	c[1] = a[2] * b[0] - a[0] * b[2];
-	c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b)
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* twice the area vector of a b c */
 static void normal(const double *a, const double *b, const double *c, double *n)
 {
 	double u[3], w[3];
-	sub(b, a, u);
-	sub(c, a, w);
-	cross(u, w, n);
+	vec3_sub(b, a, u);
+	vec3_sub(c, a, w);
+	vec3_cross(u, w, n);
 }
 
 static double quality(const double *a, const double *b, const double *c)
 {
 	double n[3], u[3], w[3], x[3];
 	normal(a, b, c, n);
-	sub(b, a, u);
-	sub(c, b, w);
-	sub(a, c, x);
-	double s = dot(u, u) + dot(w, w) + dot(x, x);
-	return s > 0 ? 2 * sqrt(3.0) * sqrt(dot(n, n)) / s : 0;
+	vec3_sub(b, a, u);
+	vec3_sub(c, b, w);
+	vec3_sub(a, c, x);
+	double s = vec3_dot(u, u) + vec3_dot(w, w) + vec3_dot(x, x);
+	return s > 0 ? 2 * sqrt(3.0) * sqrt(vec3_dot(n, n)) / s : 0;
 }
 
 /* adds the plane through p with unit normal n */
 static void q_add_plane(double *q, const double *n, const double *p)
 {
-	double d = -dot(n, p);
+	double d = -vec3_dot(n, p);
 	double e[4] = {n[0], n[1], n[2], d};
 	int k = 0;
 	for (int i = 0; i < 4; i++)
@@ -327,7 +310,7 @@ static int valid(struct mesh *m, int u, int v, double *cost, int full)
 		double n0[3], n1[3];
 		normal(a[0], a[1], a[2], n0);
 		normal(b[0], b[1], b[2], n1);
-		if (!(dot(n0, n1) > 0))
+		if (!(vec3_dot(n0, n1) > 0))
 			return 0;
 		double q1 = quality(b[0], b[1], b[2]);
 		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
@@ -404,7 +387,7 @@ static int near_one(const struct mesh *m, const double *q, size_t t)
 	const float *b = m->osph + 4 * t;
 	double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
 	double r = b[3] + m->tol;
-	if (dot(e, e) > r * r)
+	if (vec3_dot(e, e) > r * r)
 		return 0;       /* its bounding sphere is too far */
 	return point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1], m->p + 3 * (size_t)o[2]) <=
 	       m->tol;
@@ -720,9 +703,9 @@ static void classify(struct mesh *m, struct tri_decimate_stats *st)
 			const int *tv = m->tv + 3 * e[i].t;
 			double n[3], d[3], w[3];
 			normal(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1], m->p + 3 * (size_t)tv[2], n);
-			sub(m->p + 3 * (size_t)b, m->p + 3 * (size_t)a, d);
-			cross(n, d, w);
-			double l = sqrt(dot(w, w));
+			vec3_sub(m->p + 3 * (size_t)b, m->p + 3 * (size_t)a, d);
+			vec3_cross(n, d, w);
+			double l = sqrt(vec3_dot(w, w));
 			if (l > 0) {
 				for (int k = 0; k < 3; k++)
 					w[k] /= l;
@@ -785,7 +768,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 		for (int s2 = 0; s2 < 3; s2++) {
 			const double *x = m.p + 3 * (size_t)a[s2];
 			double e[3] = {x[0] - b[0], x[1] - b[1], x[2] - b[2]};
-			r = fmax(r, sqrt(dot(e, e)));
+			r = fmax(r, sqrt(vec3_dot(e, e)));
 		}
 		/* float rounding of the centre and radius: a relative 1e-6 of
 		 * the coordinates more keeps the sphere around the triangle */
@@ -824,7 +807,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 		const int *a = m.tv + 3 * t;
 		double nn[3];
 		normal(m.p + 3 * (size_t)a[0], m.p + 3 * (size_t)a[1], m.p + 3 * (size_t)a[2], nn);
-		double l = sqrt(dot(nn, nn));
+		double l = sqrt(vec3_dot(nn, nn));
 		if (!(l > 0))
 			continue;
 		for (int k = 0; k < 3; k++)

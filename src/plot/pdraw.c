@@ -25,6 +25,7 @@
 #include "num.h"
 #include "plot_common.h"
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -173,21 +174,9 @@ struct view {
 	double a, bx, by;           /* view plane -> page: a*X + bx, a*Y + by */
 };
 
-static void cross3(const double *a, const double *b, double *o)
-{
-	o[0] = a[1] * b[2] - a[2] * b[1];
-	o[1] = a[2] * b[0] - a[0] * b[2];
-	o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double *a, const double *b)
-{
-	return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 static int normalize3(double *a)
 {
-	double n = sqrt(dot3(a, a));
+	double n = sqrt(vec3_dot(a, a));
 	if (!(n > 0))
 		return 0;
 	a[0] /= n, a[1] /= n, a[2] /= n;
@@ -201,17 +190,17 @@ static void basis(const double *v, double *e1, double *e2, double *w)
 	memcpy(w, v, 3 * sizeof *w);
 	normalize3(w);
 	double z[3] = {0, 0, 1};
-	double t = dot3(z, w);
+	double t = vec3_dot(z, w);
 	for (int k = 0; k < 3; k++)
 		e2[k] = z[k] - t * w[k];
-	if (sqrt(dot3(e2, e2)) < 1e-9) {
+	if (sqrt(vec3_dot(e2, e2)) < 1e-9) {
 		double y[3] = {0, 1, 0};
-		t = dot3(y, w);
+		t = vec3_dot(y, w);
 		for (int k = 0; k < 3; k++)
 			e2[k] = y[k] - t * w[k];
 	}
 	normalize3(e2);
-	cross3(e2, w, e1);
+	vec3_cross(e2, w, e1);
 }
 
 /* Data point -> view coordinates X (right), Y (up), D (towards the eye). */
@@ -220,9 +209,9 @@ static void to_view(const struct view *vw, const double *p, double *o)
 	double q[3];
 	for (int k = 0; k < 3; k++)
 		q[k] = (p[k] - vw->c[k]) * vw->sc[k];
-	o[0] = dot3(q, vw->e1);
-	o[1] = dot3(q, vw->e2);
-	o[2] = dot3(q, vw->w);
+	o[0] = vec3_dot(q, vw->e1);
+	o[1] = vec3_dot(q, vw->e2);
+	o[2] = vec3_dot(q, vw->w);
 }
 
 static void to_page(const struct view *vw, const double *p, double *px, double *py)
@@ -406,7 +395,7 @@ static void axes(struct draw *d, const struct view *vw, const double *box, const
 	/* of the two side corners (xfront, yback) and (xback, yfront), the
 	 * one further left on the screen */
 	double ca[3] = {xfront, box[2 + !yf], 0}, cb[3] = {box[!xf], yfront, 0};
-	double *pz = dot3(ca, vw->e1) * vw->sc[0] <= dot3(cb, vw->e1) * vw->sc[0] ? ca : cb;
+	double *pz = vec3_dot(ca, vw->e1) * vw->sc[0] <= vec3_dot(cb, vw->e1) * vw->sc[0] ? ca : cb;
 	double oz[3] = {-vw->e1[0], -vw->e1[1], 0};
 	/* z ticks point to the screen's left, in the x-y plane */
 	if (!normalize3(oz))
@@ -476,18 +465,18 @@ static void frag_plane(struct frag *f)
 		for (int k = 0; k < 3; k++)
 			c[k] += a[k] / f->n;
 	}
-	double len = sqrt(dot3(n, n));
+	double len = sqrt(vec3_dot(n, n));
 	f->hasplane = !f->seg && len > 1e-12;
 	if (f->hasplane) {
 		for (int k = 0; k < 3; k++)
 			f->pl[k] = n[k] / len;
-		f->pl[3] = -dot3(f->pl, c);
+		f->pl[3] = -vec3_dot(f->pl, c);
 	}
 }
 
 static int side(const double *pl, const double *p)
 {
-	double s = dot3(pl, p) + pl[3];
+	double s = vec3_dot(pl, p) + pl[3];
 	return s > PLANE_EPS ? 1 : s < -PLANE_EPS ? -1 : 0;
 }
 
@@ -508,7 +497,7 @@ static struct frag *clip_part(const struct frag *f, const double *pl, const int 
 			o->orig[m++] = (inb || opposite) ? f->orig[i] : 0;
 		}
 		if (opposite) {
-			double sa = dot3(pl, a) + pl[3], sb = dot3(pl, b) + pl[3];
+			double sa = vec3_dot(pl, a) + pl[3], sb = vec3_dot(pl, b) + pl[3];
 			double t = sa / (sa - sb);
 			for (int k = 0; k < 3; k++)
 				o->p[3 * m + k] = a[k] + t * (b[k] - a[k]);
@@ -807,7 +796,7 @@ static double shade(const struct frag *f)
 	double n[3] = {f->pl[0], f->pl[1], f->pl[2]};
 	if (n[2] < 0)                   /* the side turned to the eye */
 		n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
-	double l = dot3(n, light);
+	double l = vec3_dot(n, light);
 	return SHADE_AMBIENT + (1 - SHADE_AMBIENT) * (l > 0 ? l : 0);
 }
 
@@ -912,8 +901,8 @@ static struct draw *render(void *vc)
 /* Rotates v by angle (degrees) about the unit axis u (Rodrigues). */
 static void rotate(double *v, const double *u, double angle)
 {
-	double t = angle * M_PI / 180, cs = cos(t), sn = sin(t), k = dot3(u, v), x[3];
-	cross3(u, v, x);
+	double t = angle * M_PI / 180, cs = cos(t), sn = sin(t), k = vec3_dot(u, v), x[3];
+	vec3_cross(u, v, x);
 	for (int i = 0; i < 3; i++)
 		v[i] = v[i] * cs + x[i] * sn + u[i] * k * (1 - cs);
 }
