@@ -9,8 +9,8 @@
 #   make install PREFIX=/usr/local
 #   make NO_X11=1   build without the X11 preview
 #
-# Layout: src/lib/ is the static library (formats, drawing back end,
-# helpers); src/splat, src/bleach, src/etch are one program each (every .c
+# Layout: src/lib/ is the static library, one folder per layer (system,
+# numerics, geometry, drawing, formats; HACKING.md); src/splat, src/bleach, src/etch are one program each (every .c
 # in the folder, main in main.c); src/plot/ holds one program per file,
 # plus shared plot modules named plot_*.c.  Programs and tests are found by
 # wildcard, so adding a file needs no change here.
@@ -24,7 +24,8 @@ WARN     = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototy
 ifdef WERROR
 WARN    += -Werror
 endif
-CPPFLAGS += -D_XOPEN_SOURCE=700 -Isrc/lib
+LIB_DIRS := $(sort $(dir $(wildcard src/lib/*/*.c src/lib/*/*.h)))
+CPPFLAGS += -D_XOPEN_SOURCE=700 $(patsubst %/,-I%,$(LIB_DIRS))
 LDLIBS   = -lm -lpthread
 PREFIX  ?= /usr/local
 
@@ -41,7 +42,7 @@ endif
 # program or test that draws
 LDLIBS  += $(X11_LIBS)
 
-LIB_SRC  := $(wildcard src/lib/*.c)
+LIB_SRC  := $(wildcard src/lib/*/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 LIB      := $(BUILD)/libsample3d.a
 

@@ -487,7 +487,7 @@ int main(int argc, char **argv)
 		die("%s:1: a 2D rate array (ny = 1): etch is 3D, develop it with etch2d", o.input);
 	}
 	struct rfield f;
-	rfield_init(&f, r, o.input);
+	fmt_rate_field(&f, r, o.input);
 	check_inside(&f, &o);
 	estimate(r, &f, &o);
 	/* curves.plot, its .2D and the cut are committed together (util.h) */

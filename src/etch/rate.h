@@ -5,6 +5,7 @@
 #ifndef ETCH_RATE_H
 #define ETCH_RATE_H
 
+#include "fmt_rate.h"
 #include "rfield.h"
 
 #endif

@@ -23,6 +23,7 @@
 #define ETCH2D_H
 
 #include "fmt_plot.h"
+#include "fmt_rate.h"
 #include "rfield.h"
 
 #include <stddef.h>

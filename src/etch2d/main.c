@@ -114,7 +114,7 @@ int main(int argc, char **argv)
 		die("%s:1: a 3D rate array (ny = %d): etch2d develops a 2D one (ny = 1); use etch",
 		    o.input, r->ny);
 	struct rfield f;
-	rfield_init(&f, r, o.input);
+	fmt_rate_field(&f, r, o.input);
 	if (o.seeded) {
 		if (o.seed[0] < f.lo[0] || o.seed[0] > f.hi[0] || o.seed[1] < f.lo[2] || o.seed[1] > f.hi[2])
 			die("-seed %g %g: outside the rate array's box x %g..%g, z %g..%g",

@@ -72,7 +72,7 @@ static void test_index(void)
 	       "8 steps):\n", SHIFT);
 	struct ratefile *r = triangular(SHIFT);
 	struct rfield f;
-	rfield_init(&f, r, "triangular");
+	fmt_rate_field(&f, r, "triangular");
 	struct etch_opts o = default_opts(0.8, 0.1, 0.05);
 	struct etch_stats st = {0};
 	struct mesh *m = etch_run(&f, &o, &st);
@@ -171,7 +171,7 @@ static void test_three(void)
 	for (size_t i = 0; i < (size_t)41 * 41 * 31; i++)
 		v[i] = 1;
 	struct rfield f;
-	rfield_init(&f, r, "uniform");
+	fmt_rate_field(&f, r, "uniform");
 	struct etch_opts o = default_opts(et, 0.1, 0.1);
 	o.deloop = 1;
 	o.rate = r;
@@ -232,7 +232,7 @@ static void test_triangular(double shift)
 	printf("R = 2|x - %g| + 0.2, 8 steps of 0.1 s, delooped (Figure 8.12):\n", shift);
 	struct ratefile *r = triangular(shift);
 	struct rfield f;
-	rfield_init(&f, r, "triangular");
+	fmt_rate_field(&f, r, "triangular");
 	double seg = 0.05;
 	struct etch_opts o = default_opts(0.8, 0.1, seg);
 	o.deloop = 1;
@@ -296,7 +296,7 @@ static void test_grid_reference(void)
 	printf("hashed grid against the reference search:\n");
 	struct ratefile *r = triangular(SHIFT);
 	struct rfield f;
-	rfield_init(&f, r, "triangular");
+	fmt_rate_field(&f, r, "triangular");
 	struct etch_opts o = default_opts(0.8, 0.1, 0.05);
 	struct etch_stats st = {0};
 	struct mesh *m = etch_run(&f, &o, &st);
@@ -308,7 +308,7 @@ static void test_grid_reference(void)
 	double *v = fmt_rate_values(r);
 	for (size_t i = 0; i < (size_t)31 * 41 * 31; i++)
 		v[i] = 1;
-	rfield_init(&f, r, "uniform");
+	fmt_rate_field(&f, r, "uniform");
 	o = default_opts(1.0, 0.1, 0.05);
 	o.rate = r;
 	o.seed = 2;

@@ -40,7 +40,7 @@ int main(void)
 	}
 	struct ratefile *r = fmt_rate_read("rate.bin");
 	struct rfield f;
-	rfield_init(&f, r, "rate.bin");
+	fmt_rate_field(&f, r, "rate.bin");
 	double et = 30;
 	int refine[3] = {1, 1, fmm_auto_refine(r)};
 	struct fmm *fm = fmm_solve(r, refine);

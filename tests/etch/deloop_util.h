@@ -201,7 +201,7 @@ static inline struct mesh *two_seed_run(double et, double shift, struct ratefile
 	for (size_t i = 0; i < (size_t)31 * 41 * 31; i++)
 		v[i] = 1;
 	struct rfield f;
-	rfield_init(&f, *r, "uniform");
+	fmt_rate_field(&f, *r, "uniform");
 	struct etch_opts o = default_opts(et, 0.1, 0.1);
 	o.pt = 0.8;
 	o.deloop = 1;

@@ -149,7 +149,7 @@ static void test_fold(double shift)
 			for (int i = 0; i < r->nx; i++)
 				v[fmt_rate_index(r, i, j, k)] = 2 * fabs(fmt_rate_x(r, i) - shift) + 0.2;
 	struct rfield f;
-	rfield_init(&f, r, "triangular");
+	fmt_rate_field(&f, r, "triangular");
 	struct etch_opts o = default_opts(0.8, 0.1, 0.05);
 	o.deloop = 1;
 	o.rate = r;

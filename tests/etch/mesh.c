@@ -227,7 +227,7 @@ int main(void)
 {
 	struct ratefile *r = box();
 	struct rfield f;
-	rfield_init(&f, r, "box");
+	fmt_rate_field(&f, r, "box");
 	test_checker(&f);
 	test_flat_split(&f);
 	test_pyramid();

@@ -109,7 +109,7 @@ static int run(const char *name, double (*rate)(double x, double z), double et, 
 			for (int i = 0; i < nx; i++)
 				v[fmt_rate_index(r, i, j, k)] = rate(fmt_rate_x(r, i), fmt_rate_z(r, k));
 	struct rfield f;
-	rfield_init(&f, r, name);
+	fmt_rate_field(&f, r, name);
 	struct etch_opts o = {0};
 	o.et = et;
 	o.seg = SEG;

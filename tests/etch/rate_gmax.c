@@ -65,7 +65,7 @@ int main(void)
 		for (int t = 1; t <= 3; t++) {
 			par_set_threads(t);
 			struct rfield f;
-			rfield_init(&f, r, "random");
+			fmt_rate_field(&f, r, "random");
 			double want = direct_gmax(&f);
 			if ((f.gmax != want || f.rmax != rmax) && nfail++ < 10)
 				fprintf(stderr, "rate_gmax: grid %d (%dx%dx%d, %d threads): gmax %.17g, "

@@ -58,7 +58,7 @@ static double run(double (*rate)(double), double dt, int euler, double et, doubl
 			v[(size_t)k * 9 + i] = col[k];
 	}
 	struct rfield f;
-	rfield_init(&f, r, "zonly");
+	fmt_rate_field(&f, r, "zonly");
 	struct etch_opts o = {0};
 	o.et = et;
 	o.dt = dt;

@@ -40,7 +40,7 @@ static inline void t_opts(struct e2opts *o, int method, double et, double pt)
 static inline void t_run(struct e2 *e, const struct ratefile *r, struct rfield *f,
 			 const struct e2opts *o)
 {
-	rfield_init(f, r, "test");
+	fmt_rate_field(f, r, "test");
 	e2_init(e, f, o);
 	e2_run(e);
 }

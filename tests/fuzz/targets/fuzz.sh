@@ -23,18 +23,19 @@ secs=${3:-60}
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 CLANG=${FUZZ_CC:-clang}
 READERS="splat bleach contour stack plot2d plot3d options template rate_ascii rate_binary gds"
-FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11 -I$top/src/lib"
+FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11"
+for d in "$top"/src/lib/*/; do FLAGS="$FLAGS -I${d%/}"; done
 
 command -v "$CLANG" >/dev/null 2>&1 || { echo "fuzz: $CLANG is not installed (apt-get install clang libclang-rt-14-dev)" >&2; exit 77; }
 mkdir -p "$dir/obj" "$dir/corpus" "$dir/findings" || exit 1
 
 # the library, minus the X11 preview, with coverage for the fuzzer
 objs=""
-for src in "$top"/src/lib/*.c; do
+for src in "$top"/src/lib/*/*.c; do
 	case $src in */draw_x11.c) continue ;; esac
 	objs="$objs $dir/obj/$(basename "$src" .c).o"
 done
-for src in "$top"/src/lib/*.c; do
+for src in "$top"/src/lib/*/*.c; do
 	case $src in */draw_x11.c) continue ;; esac
 	o=$dir/obj/$(basename "$src" .c).o
 	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$top/src/lib" -name '*.h' -newer "$o" 2>/dev/null)" ]; then

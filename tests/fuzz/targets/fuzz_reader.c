@@ -15,7 +15,7 @@
  *
  * Build by hand:
  *   clang -g -O1 -fsanitize=fuzzer,address,undefined -DREADER_NAME='"splat"' \
- *     -Isrc/lib tests/fuzz/targets/fuzz_reader.c (the library sources) -lm
+ *     -Isrc/lib/* (each layer) tests/fuzz/targets/fuzz_reader.c (the library sources) -lm
  *
  * Not a test of its own: tests/fuzz/002-targets.sh builds every target
  * and runs it over its corpus once.

@@ -18,6 +18,7 @@
  *   then per array: its name on a line, then its values, nx per line.
  */
 #include "fmt_rate.h"
+#include "rfield.h"
 #include "checked.h"
 #include "lex.h"
 #include "num.h"
@@ -568,4 +569,11 @@ void fmt_rate_write_planes(const char *path, const struct ratefile *r, int ascii
 void fmt_rate_write(const char *path, const struct ratefile *r, int ascii)
 {
 	fmt_rate_write_planes(path, r, ascii, NULL, NULL);
+}
+
+void fmt_rate_field(struct rfield *f, const struct ratefile *r, const char *name)
+{
+	int n[3] = {r->nx, r->ny, r->nz};
+	double lo[3] = {r->xmin, r->ymin, r->zmin}, hi[3] = {r->xmax, r->ymax, r->zmax};
+	rfield_init(f, n, lo, hi, fmt_rate_values(r), name);
 }

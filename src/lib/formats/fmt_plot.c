@@ -1,11 +1,13 @@
 /* fmt_plot.c - see fmt_plot.h. */
 #include "fmt_plot.h"
+#include "surf.h"
 #include "checked.h"
 #include "lex.h"
 #include "num.h"
 #include "par.h"
 #include "util.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -307,4 +309,36 @@ void fmt_plot_free(struct plot_file *pf)
 	}
 	free(pf->sets);
 	free(pf);
+}
+
+struct surf *surf_from_plot_set(const struct plot_set *set, char *err, size_t errsz)
+{
+	const double *b = set->bounds;
+	if (!(b[0] < b[1] && b[2] < b[3] && b[4] < b[5])) {
+		snprintf(err, errsz, "the bounds line is not a box (each minimum below its maximum)");
+		return NULL;
+	}
+	if ((size_t)set->ncurves >= UINT_MAX) {
+		snprintf(err, errsz, "too many triangles");
+		return NULL;
+	}
+	for (int c = 0; c < set->ncurves; c++) {
+		const struct plot_curve *cv = &set->curves[c];
+		if (cv->npts != 4) {
+			snprintf(err, errsz, "curve %d: %d points, expected a triangle "
+				 "(a closed curve of 4 points)", c + 1, cv->npts);
+			return NULL;
+		}
+		if (memcmp(cv->p, cv->p + 9, 3 * sizeof *cv->p) != 0) {
+			snprintf(err, errsz, "curve %d: not closed (the 4th point must repeat "
+				 "the 1st)", c + 1);
+			return NULL;
+		}
+	}
+	struct surf *s = surf_new(b);
+	s->cap = 9 * (size_t)set->ncurves;
+	s->v = xreallocarray(NULL, s->cap ? s->cap : 1, sizeof *s->v);
+	for (int c = 0; c < set->ncurves; c++)
+		memcpy(s->v + 9 * s->ntri++, set->curves[c].p, 9 * sizeof *s->v);
+	return s;
 }

@@ -95,10 +95,9 @@ static void scan_planes(void *ctx, size_t lo, size_t hi, int worker)
 		}
 }
 
-void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
+void rfield_init(struct rfield *f, const int n[3], const double lo[3], const double hi[3],
+		 const double *v, const char *name)
 {
-	int n[3] = {r->nx, r->ny, r->nz};
-	double lo[3] = {r->xmin, r->ymin, r->zmin}, hi[3] = {r->xmax, r->ymax, r->zmax};
 	for (int d = 0; d < 3; d++) {
 		if (d == 1 && n[d] == 1) {
 			/* a 2D array: one row, the same at every y; the box
@@ -119,7 +118,7 @@ void rfield_init(struct rfield *f, const struct ratefile *r, const char *name)
 		f->hi[d] = hi[d];
 		f->h[d] = (hi[d] - lo[d]) / (n[d] - 1);
 	}
-	f->v = fmt_rate_values(r);
+	f->v = v;
 	f->flat_outside = 0;
 	/* planes of cells split among threads; max is independent of the
 	 * split, and the first bad point is the smallest index any finds */

@@ -12,8 +12,6 @@
 #ifndef S3D_RFIELD_H
 #define S3D_RFIELD_H
 
-#include "fmt_rate.h"
-
 struct rfield {
 	int n[3];               /* grid points per axis (each >= 2) */
 	double lo[3], hi[3];    /* box, um */
@@ -28,10 +26,14 @@ struct rfield {
 				 * rate continued below it) */
 };
 
-/* Sets up f over r's rate array (not copied: r must outlive f).  Dies
- * ("file:1: ...") if the grid is degenerate (fewer than 2 points along x
- * or z, or along y when ny > 1) or a rate is negative. */
-void rfield_init(struct rfield *f, const struct ratefile *r, const char *name);
+/* Sets up f over the rate array v (n[0] x n[1] x n[2] values, x fastest,
+ * over the box lo..hi; not copied: v must outlive f).  name is the file
+ * the array came from, for messages.  Dies ("name:1: ...") if the grid is
+ * degenerate (fewer than 2 points along x or z, or along y when n[1] > 1)
+ * or a rate is negative.  fmt_rate_field (fmt_rate.h) calls it on a rate
+ * file's array. */
+void rfield_init(struct rfield *f, const int n[3], const double lo[3], const double hi[3],
+		 const double *v, const char *name);
 
 /* R and grad R at p.  Outside the box the rate is not defined (thesis
  * 7.5.2.1); p is clamped into the box, so a node that has left it keeps

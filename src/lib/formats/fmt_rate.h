@@ -76,6 +76,11 @@ void fmt_rate_write_planes(const char *path, const struct ratefile *r, int ascii
 			   rate_plane_fn gen, void *ctx);
 void fmt_rate_free(struct ratefile *r);
 
+/* The rate (array 0) of r as the interpolated field of rfield.h (r must
+ * outlive f); name is r's file, for rfield_init's messages. */
+struct rfield;
+void fmt_rate_field(struct rfield *f, const struct ratefile *r, const char *name);
+
 /* CRC-32 (IEEE 802.3, as in zlib), exposed for tests. */
 unsigned long fmt_crc32(unsigned long crc, const void *data, size_t len);
 

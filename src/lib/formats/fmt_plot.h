@@ -87,4 +87,11 @@ void fmt_plot_curves(struct plot_writer *w, size_t n, int npts,
 /* Checks the counts promised, commits the file (atomic rename). */
 void fmt_plot_close(struct plot_writer *w);
 
+/* The triangles (surf.h) of one set of a plot3d file: every curve must be a
+ * triangle (a closed curve of 4 points, the first repeated) and the
+ * bounds a box.  Otherwise returns NULL with what is wrong in err
+ * ("curve M: ..."), having allocated nothing. */
+struct surf;
+struct surf *surf_from_plot_set(const struct plot_set *set, char *err, size_t errsz);
+
 #endif

@@ -23,8 +23,6 @@
 
 #include <stddef.h>
 
-struct plot_set;
-
 struct surf {
 	size_t ntri;
 	double *v;          /* 9 numbers per triangle: x y z of each vertex */
@@ -40,11 +38,6 @@ struct surf {
 /* An empty surface in the box (6 numbers). */
 struct surf *surf_new(const double *box);
 void surf_add(struct surf *s, const double *tri9);
-/* The triangles of one set of a plot3d file: every curve must be a
- * triangle (a closed curve of 4 points, the first repeated) and the
- * bounds a box.  Otherwise returns NULL with what is wrong in err
- * ("curve M: ..."), having allocated nothing. */
-struct surf *surf_from_plot_set(const struct plot_set *set, char *err, size_t errsz);
 void surf_free(struct surf *s);
 
 /* Builds the x-y grid used by surf_above (call after the last surf_add). */
