@@ -6,7 +6,7 @@
  *
  * Depth convention inside the modules: node j of a column lies at depth
  * j * dz below the original resist top (j = 0 the top, j = nz - 1 the
- * resist-substrate interface).  Only main.c maps it to the rate file's
+ * resist-substrate interface).  Only run.c maps it to the rate file's
  * z, which runs from -thickness (k = 0) up to 0.
  */
 #ifndef S3D_BLEACH_H
@@ -15,6 +15,23 @@
 #include "fmt_bleach.h"
 
 #include <stddef.h>
+
+/* ---- run.c: the 3D pipeline, from the image to the rate array ---- */
+
+/* What the command line asks of a 3D run (bleach(1)). */
+struct bleach_opts {
+	const char *contour;    /* the aerial image or image stack */
+	const char *input;      /* the resist file (bleach.5) */
+	const char *output;     /* the rate file, or NULL for the default name */
+	int ascii, solid, quiet;
+	double level;           /* M of the -solid surface */
+	int have_dose;          /* -dose given: dose replaces the input's */
+	double dose;            /* mJ/cm2 */
+};
+
+/* Reads, exposes, bakes and writes the rate array (and mxyz.solid.3D);
+ * dies on bad input. */
+void bleach_run(const struct bleach_opts *o);
 
 /* ---- thinfilm.c: characteristic-matrix standing waves (thesis 2.1) ---- */
 
