@@ -67,14 +67,16 @@ extern const char plot_usage_x[];
 /* The value of key if the file set it, else NULL. */
 const struct opt_value *plot_opt(const struct opt_spec *spec,
 				 const struct opt_value *val, const char *key);
-/* Fills s from its defaults (set by the caller), the options-file values
- * of the common keywords, and the command line. */
-void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
-			   const struct opt_value *val, const struct plot_cmd *c);
+/* The start every plot program shares: val (one entry per entry of spec,
+ * its terminator included) cleared and filled from the options-file of
+ * -o if given, then s set from defaults, the options-file values of the
+ * common keywords, and the command line. */
+void plot_begin(struct plot_settings *s, const struct plot_settings *defaults,
+		const struct opt_spec *spec, struct opt_value *val, const struct plot_cmd *c);
 
 /* The labels an input file carries (fmt_labels.h) replace the built-in
  * defaults: a label the options-file or the command line sets wins, an
- * empty one in l changes nothing.  Call after plot_settings_resolve; l
+ * empty one in l changes nothing.  Call after plot_begin; l
  * must outlive s. */
 void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
 			  const struct opt_spec *spec, const struct opt_value *val,
