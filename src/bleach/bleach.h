@@ -65,8 +65,9 @@ struct exposure {
 
 /* Step accuracy: C * h * Imax stays below this.  RK4 and the Hermite
  * interpolation then err by ~1e-8 in M (measured: halving the step
- * changes M by ~3e-8 on Olin Hunt 6512), far below the 1e-4 the issue
- * allows (checked by tests/bleach/expose.c). */
+ * changes M by ~3e-8 on Olin Hunt 6512), far below the 1e-4 in M that
+ * tests/bleach/expose.c allows against the closed form and the halved
+ * step. */
 #define EXPOSE_STEP 0.1
 
 /* Most dose steps of one run: beyond, C * dose is absurd (every column
@@ -153,7 +154,7 @@ void bake_rows(double *rows, int nrows, int n, double d, double sigma);
 /* The same for the rows of a and of b (b may be NULL), one matrix. */
 void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 
-/* ---- peb.c: reaction-diffusion bake of a CA positive resist (issue 18) ---- */
+/* ---- peb.c: reaction-diffusion bake of a CA positive resist ---- */
 
 struct peb_params {
 	double q0, kamp, p, kloss, kq;  /* car: -, 1/s, -, 1/s, 1/s */
