@@ -45,12 +45,8 @@ static const char usage_head[] =
 	"                   its size) is beyond the limits (also SAMPLE3D_BIG=1)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
-	PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("noplot"),
-	PLOT_OPT_ONOFF("postscript"), PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"),
-	PLOT_OPT_ONOFF("contlabel"), {"joinlevel", OPT_WORD, 0, 0, "high|low"},
-	PLOT_OPT_SCALE, {"linetypes", OPT_INT, 1, 3, NULL},
-	PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
+	PLOT_OPT_COMMON, PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("contlabel"),
+	{"joinlevel", OPT_WORD, 0, 0, "high|low"}, {"linetypes", OPT_INT, 1, 3, NULL},
 	/* not in the guide's list: the step, so scripts need not pass -cstep */
 	{"cstep", OPT_NUM, 0, 1e300, NULL},
 	{NULL, 0, 0, 0, NULL}

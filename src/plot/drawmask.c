@@ -30,11 +30,7 @@ static const char usage_head[] =
 	"  -lbl             label each feature (number, transmission, phase)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
-	PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_ONOFF("postscript"),
-	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"), PLOT_OPT_ONOFF("landscape"),
-	PLOT_OPT_SCALE, PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
-	PLOT_OPT_ONOFF("nolabel"),
+	PLOT_OPT_COMMON, PLOT_OPT_ONOFF("landscape"), PLOT_OPT_ONOFF("nolabel"),
 	{NULL, 0, 0, 0, NULL}
 };
 

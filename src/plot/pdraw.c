@@ -52,13 +52,8 @@ static const char usage_head[] =
 	"  q quit (the final view is written to the PostScript file)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("zlabel"),
-	PLOT_OPT_STR("toplabel"), PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("postscript"),
-	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_STR("printer"),
-	PLOT_OPT_ONOFF("line"), PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"),
-	PLOT_OPT_ONOFF("markerchange"), PLOT_OPT_ONOFF("hiddenline"), PLOT_OPT_ONOFF("nosort"),
-	PLOT_OPT_SCALE, PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
-	PLOT_OPT_TICKS("zticks"),
+	PLOT_OPT_COMMON, PLOT_OPT_LINES, PLOT_OPT_STR("zlabel"), PLOT_OPT_TICKS("zticks"),
+	PLOT_OPT_ONOFF("hiddenline"), PLOT_OPT_ONOFF("nosort"),
 	{NULL, 0, 0, 0, NULL}
 };
 
