@@ -11,4 +11,4 @@ out=${OUT:-$here/out}/$size
 mkdir -p "$out"
 cd "$out"
 sh "$here/make-mask.sh" "$size" >mask.in
-sample3D -if mask.in -bf "$here/resist.in" -et 60 -last -h "$@"
+sample3D -if mask.in -bf "$here/resist.in" -et 60 -last -hidden "$@"

@@ -11,7 +11,7 @@ out=${OUT:-$here/out}
 for d in -0.3 0.3; do
 	mkdir -p "$out/defocus$d" && cd "$out/defocus$d"
 	splat -q -defocus "$d" "$here/mask.in"
-	sample3D -cf image.stack -bf "$here/resist.in" -et 60 -deloop -h "$@"
+	sample3D -cf image.stack -bf "$here/resist.in" -et 60 -deloop -hidden "$@"
 	if command -v measure >/dev/null 2>&1; then
 		measure -rel 5,50,95 -hole 0 0 curves.plot >cd.txt
 	fi

@@ -7,7 +7,7 @@
 # methods is a usage error.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o rate.bin 21 21 11 -1 1 -1 1 -0.5 0 '0.1 + 0.8 * exp(-(x^2 + y^2) / 0.2)' ||
 	fail "mkrate"
 # (the '#' labels line heads the file, not a set: plot3d(5); -last keeps it)

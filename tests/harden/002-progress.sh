@@ -19,7 +19,7 @@ SAMPLE3D_PROGRESS=0 splat -q -o b.cont in.txt 2>err.txt || fail "splat -q"
 same a.cont b.cont
 
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o r.bin 5 5 5 0 1 0 1 0 1 1 || fail "mkrate"
 SAMPLE3D_PROGRESS=0 etch -et 0.2 -dt 0.05 -seg 0.25 r.bin 2>err.txt || fail "etch: $(cat err.txt)"
 grep -E '^etch: time steps: [0-9]+% done, about [0-9.]+ (s|min|h) left$' err.txt >p.txt ||

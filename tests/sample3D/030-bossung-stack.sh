@@ -15,7 +15,7 @@
 # for speed (2.4 s): at 0.03 um spacing the CDs are ~0.04 um larger, the
 # margin the same (examples/contact-highna).
 . "$TOP/tests/lib/common.sh"
-command -v measure >/dev/null 2>&1 || skip "measure is not built"
+built measure
 cat >m.in <<'IN'
 wavelength 0.365
 na 0.6
