@@ -1,5 +1,5 @@
 #!/bin/sh
-# Issue 11: a 0.5 um contact at NA 0.6, i-line, in 1 um of resist, focused 0.3 um inside the resist and 0.3 um above it.
+# The image inside the resist: a 0.5 um contact at NA 0.6, i-line, in 1 um of resist, focused 0.3 um inside the resist and 0.3 um above it.
 # Usage: sh run.sh [sample3D options, e.g. -q]; outputs go to $OUT (default: out/ here).
 # Each run: splat -defocus writes the image stack, sample3D passes it to
 # bleach and etch (ray-string, delooped so that measure can read it), and

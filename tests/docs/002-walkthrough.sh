@@ -1,6 +1,6 @@
 #!/bin/sh
 # The README's walk through the contact runs as written, twice in a row
-# in one shell (issue finding 6: "mkdir /tmp/contact" failed the second
+# in one shell (once "mkdir /tmp/contact" failed the second
 # time and $OLDPWD pointed elsewhere), leaving every picture it promises;
 # and no man page's example calls a test tool (mkrate) or a build path.
 . "$TOP/tests/lib/common.sh"

@@ -1,6 +1,6 @@
 #!/bin/sh
-# etch -last writes only the final set (issue: a long run wrote a set per
-# print time with no way to skip them): for the ray-string and the
+# etch -last writes only the final set (a long run would otherwise write a set
+# per print time with no way to skip them): for the ray-string and the
 # fast-marching engines, curves.plot, curves.plot.2D and the cut of
 # "-pt 0.25 -last" are byte for byte the last set of the same run without
 # -last (sets are separated by one blank line); -last with the cell

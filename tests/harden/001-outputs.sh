@@ -1,4 +1,4 @@
-# Atomic outputs (issue 14, item 9), against the rules of util.h:
+# Atomic outputs, against the rules of util.h:
 # - an output that is not a regular file (a symbolic link to a device, a
 #   FIFO) is written in place, never renamed over;
 # - a program with several outputs (splat: image and cutlines) commits

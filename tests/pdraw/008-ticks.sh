@@ -1,6 +1,6 @@
 #!/bin/sh
-# No two texts of a pdraw picture overlap (issue finding 1: "-0.70" was
-# drawn on "2.5"), measured on the SVG with Helvetica's real advance
+# No two texts of a pdraw picture overlap (once "-0.70" was drawn
+# on "2.5"), measured on the SVG with Helvetica's real advance
 # widths (tests/lib/textoverlap.awk), over boxes thin and thick, views
 # from every side, -e, -zs, and labelled axes as sample3D writes them.
 # The old placement fails the thin-resist case this test starts with.

@@ -1,5 +1,5 @@
-# The Bossung asymmetry that the image inside the resist brings (issue
-# 11): an isolated 0.5 um contact at NA 0.6, i-line, sigma 0.5, in 1 um of
+# The Bossung asymmetry that the image inside the resist brings
+# (splat's resist statement): an isolated 0.5 um contact at NA 0.6, i-line, sigma 0.5, in 1 um of
 # resist (index 1.7, Dill 0.8 0.05 0.014 on silicon, 0.05 um bake, Mack
 # development), exposed at 80 mJ/cm2 and developed 60 s (fast marching);
 # the bottom CD is measured 5% of the thickness above the substrate with
