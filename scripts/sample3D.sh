@@ -14,7 +14,8 @@ set -eu
 
 prog=sample3D
 # the programs beside this script come first (a build's bin/, or where
-# make install put them), then PATH: never another installed splat
+# make install put them), then PATH: never another installed splat; a
+# script run by a bare name (sh sample3D.sh) is in the current directory
 here=.
 case $0 in
 */*) here=$(cd "${0%/*}" && pwd) && PATH=$here:$PATH ;;
