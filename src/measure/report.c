@@ -9,6 +9,7 @@
  * machines whose last bits differ.
  */
 #include "measure.h"
+#include "rough.h"
 #include "fmt_plot.h"
 #include "num.h"
 #include "util.h"
@@ -26,6 +27,8 @@ static void put(FILE *f, double v, double res, int first)
 		fputc(' ', f);
 	fputs(num_fmt(buf, round(v * res) / res), f);
 }
+
+void report_len(FILE *f, double um, int first) { put(f, um, RES_LEN, first); }
 
 void report_table(const struct options *o, const struct result *r)
 {
@@ -60,6 +63,8 @@ void report_table(const struct options *o, const struct result *r)
 	fputs("# resist_loss", f);
 	put(f, r->resist_loss, RES_LEN, 0);
 	fprintf(f, "\n# cleared %s\n", r->cleared ? "yes" : "no");
+	if (r->rough)
+		roughness_report(f, r->rough);
 	aout_commit(a);
 }
 
