@@ -286,13 +286,6 @@ int main(int argc, char **argv)
 
 	struct result r;
 	measure_feature(s, &o, z, &r);
-	for (int i = 0; i < r.nrows; i++)
-		if (r.rows[i].edge) {
-			warn("%s: at z = %g the %s reaches the box edge: its cd is cut there",
-			     o.input, r.rows[i].z,
-			     o.kind == HOLE ? "hole" : o.kind == SPACE ? "space" : "line");
-			break;
-		}
 	struct roughness rough;
 	r.rough = NULL;
 	if (o.ler) {
@@ -305,6 +298,13 @@ int main(int argc, char **argv)
 		}
 		r.rough = &rough;
 	}
+	for (int i = 0; i < r.nrows; i++)
+		if (r.rows[i].edge) {
+			warn("%s: at z = %g the %s reaches the box edge: its cd is cut there",
+			     o.input, r.rows[i].z,
+			     o.kind == HOLE ? "hole" : o.kind == SPACE ? "space" : "line");
+			break;
+		}
 	if (o.psd || o.plot)
 		aout_defer();
 	report_table(&o, &r);
