@@ -23,13 +23,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The first of the n ascending c[] that is >= x (n if none). */
-static size_t lower_bound(const double *c, size_t n, double x)
+/* The first of the n ascending c[] that is >= x (above: > x), n if none. */
+static size_t bound(const double *c, size_t n, double x, int above)
 {
 	size_t a = 0, b = n;
 	while (a < b) {
 		size_t m = a + (b - a) / 2;
-		if (c[m] < x)
+		if (c[m] < x || (above && c[m] == x))
 			a = m + 1;
 		else
 			b = m;
@@ -37,16 +37,14 @@ static size_t lower_bound(const double *c, size_t n, double x)
 	return a;
 }
 
-/* The lines segment k may cross: those with c in [lo, hi] across. */
+/* The lines the segment may cross, first to end - 1: those with c
+ * between its ends across them, both included. */
 static void seg_lines(const double *seg, int axis, const double *c, size_t n,
 		      size_t *first, size_t *end)
 {
 	double pa = seg[1 - axis], pb = seg[3 - axis];
-	*first = lower_bound(c, n, fmin(pa, pb));
-	*end = *first;
-	double top = fmax(pa, pb);
-	while (*end < n && c[*end] <= top)
-		(*end)++;
+	*first = bound(c, n, fmin(pa, pb), 0);
+	*end = bound(c, n, fmax(pa, pb), 1);
 }
 
 struct lines_job {
