@@ -8,7 +8,8 @@
 #     LER, LWR within 0.2 %, corr_length within 1 %;
 #   - the PSD file (plot2d): two curves of N/2 points at f = k / L, the
 #     sine's power A^2 L / 2 at its frequency (0.1 %), and Parseval: the
-#     sum of each curve / L is (LER / 3)^2 (0.1 %);
+#     sum of each curve / L is (LER / 3)^2 (0.1 %); drawplot draws it on
+#     log axes;
 #   - AR(1) edges on 4096 rows, a space along x (cut along y), and a
 #     white-noise edge on 300 rows (read on 1200 lines, 4 per row, where
 #     reading only the rows would be 20 % off), and sine edges on rows
@@ -69,6 +70,8 @@ rel "$top1" "$(awk 'BEGIN { print 0.01^2 * 2 / 2 }')" 0.001 "left PSD peak"
 rel "$top2" "$(awk 'BEGIN { print 0.006^2 * 2 / 2 }')" 0.001 "right PSD peak"
 rel "$sum1" "$(awk -v l="$(ler_left sine.out)" 'BEGIN { print (l / 3)^2 }')" 0.001 "left PSD sum (Parseval)"
 rel "$sum2" "$(awk -v l="$(ler_right sine.out)" 'BEGIN { print (l / 3)^2 }')" 0.001 "right PSD sum (Parseval)"
+drawplot -xlog -ylog -noplot -svg psd.svg psd.plot 2>err.txt || fail "drawplot -xlog -ylog psd.plot: $(cat err.txt)"
+[ -s psd.svg ] || fail "drawplot wrote no picture of psd.plot"
 
 # AR(1) edges on 4096 rows, a space along x (roughsurf -swap), cut along y
 "$RS" space -swap -rows 4096 -left ar:-0.15:0.004:12:5 -right ar:0.15:0.003:6:9 \
