@@ -38,8 +38,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Lines at least (the spec of measure -ler), and at most: 65536 lines
- * of a few ray tests each take a fraction of a second. */
+/* Lines at least (measure(1), Roughness), and at most: a few ray tests
+ * per line, so the lines bound the time (tests/bench/measure-rough.sh:
+ * 16384 lines about a second on a mesh of long thin strips). */
 enum { ROUGH_LINES = 1024, ROUGH_LINES_MAX = 65536 };
 
 /* The span of kind on line ln holding t, else the one overlapping

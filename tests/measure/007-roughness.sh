@@ -14,7 +14,7 @@
 #     white-noise edge on 300 rows (read on 1200 lines, 4 per row, where
 #     reading only the rows would be 20 % off), and sine edges on rows
 #     jittered off a grid (read on 1024 evenly spaced lines): against
-#     tests/measure/edges.awk, the spec's definitions computed in awk
+#     tests/measure/edges.awk, measure(1)'s definitions computed in awk
 #     from the known edges at the same lines: LER, LWR within 0.1 %,
 #     corr_length within 1 %;
 #   - the usual table comes first, the roughness lines after it, and the
