@@ -5,6 +5,7 @@
  */
 #include "measure.h"
 #include "fmt_measure.h"
+#include "rough.h"
 #include "fmt_plot.h"
 #include "util.h"
 
@@ -22,6 +23,15 @@ void report_table(const struct options *o, const struct result *r)
 	for (int i = 0; i < r->nrows; i++) {
 		const struct row *w = &r->rows[i];
 		t.rows[i] = (struct measure_row){w->z, w->cd, {w->a, w->b, w->c}};
+	}
+	if (r->rough) {
+		const struct roughness *g = r->rough;
+		t.have_rough = 1;
+		t.ler[0] = g->ler[0];
+		t.ler[1] = g->ler[1];
+		t.lwr = g->lwr;
+		t.corr_length = g->corr[0] >= 0 && g->corr[1] >= 0 ?
+			0.5 * (g->corr[0] + g->corr[1]) : NAN;
 	}
 	fmt_measure_write(o->out, &t);
 	fmt_measure_free(&t);

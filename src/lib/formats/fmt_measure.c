@@ -38,6 +38,15 @@ static void put(FILE *f, double v, double res, int first)
 	fputs(num_fmt(buf, round(v * res) / res), f);
 }
 
+/* v, or "-" when it is NAN (a figure that does not exist). */
+static void put_or_dash(FILE *f, double v, double res)
+{
+	if (isnan(v))
+		fputs(" -", f);
+	else
+		put(f, v, res, 0);
+}
+
 void fmt_measure_write(const char *path, const struct measure_table *t)
 {
 	const struct column *col = t->hole ? hole_cols : stretch_cols;
@@ -58,15 +67,41 @@ void fmt_measure_write(const char *path, const struct measure_table *t)
 	}
 	if (t->have_swa) {
 		fputs("# swa", f);
-		if (!isnan(t->swa))
-			put(f, t->swa, RES_DEG, 0);
-		else
-			fputs(" -", f);
+		put_or_dash(f, t->swa, RES_DEG);
 		fputc('\n', f);
 	}
 	fputs("# resist_loss", f);
 	put(f, t->resist_loss, RES_LEN, 0);
 	fprintf(f, "\n# cleared %s\n", t->cleared ? "yes" : "no");
+	if (t->have_rough) {
+		fputs("# ler left", f);
+		put(f, t->ler[0], RES_LEN, 0);
+		fputs(" right", f);
+		put(f, t->ler[1], RES_LEN, 0);
+		fputs("\n# lwr", f);
+		put(f, t->lwr, RES_LEN, 0);
+		fputs("\n# corr_length", f);
+		put_or_dash(f, t->corr_length, RES_LEN);
+		fputc('\n', f);
+	}
+	aout_commit(a);
+}
+
+void fmt_measure_write_holes(const char *path, const struct measure_hole *h, size_t n,
+			     double lcdu)
+{
+	struct aout *a = aout_open(path);
+	FILE *f = a->f;
+	fputs("# x y cd\n", f);
+	for (size_t i = 0; i < n; i++) {
+		put(f, h[i].x, RES_LEN, 1);
+		put(f, h[i].y, RES_LEN, 0);
+		put(f, h[i].cd, RES_LEN, 0);
+		fputc('\n', f);
+	}
+	fputs("# lcdu", f);
+	put_or_dash(f, lcdu, RES_LEN);
+	fprintf(f, "\n# holes %zu\n", n);
 	aout_commit(a);
 }
 

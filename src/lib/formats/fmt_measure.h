@@ -10,6 +10,16 @@
  *                              the feature is absent at an end)
  *   # resist_loss 0.012        um
  *   # cleared yes              yes or no
+ *   # ler left 0.002 right 0.003   -ler: 3 sigma of each edge, um
+ *   # lwr 0.004                    3 sigma of the width, um
+ *   # corr_length 0.02             um ("-": no 1/e crossing)
+ *
+ * and the hole-array table of -lcdu -holes:
+ *
+ *   # x y cd                   one row per hole: centroid, cd, um
+ *   0.5 0.5 0.101
+ *   # lcdu 0.004               3 sample sigma of the cds ("-": < 2 holes)
+ *   # holes 49
  *
  * measure writes it; femwin -collect (fem) reads it for fem.dat.  The
  * reader takes any further column names after "z cd" (a table another
@@ -17,6 +27,8 @@
  */
 #ifndef S3D_FMT_MEASURE_H
 #define S3D_FMT_MEASURE_H
+
+#include <stddef.h>
 
 /* The most value columns after z and cd that a row keeps (a hole's
  * area, dx, dy); further ones are checked and dropped. */
@@ -36,6 +48,16 @@ struct measure_table {
 	double swa;             /* degrees; NAN for "-" or without the line */
 	double resist_loss;     /* um; NAN without the line (read) */
 	int cleared;
+	int have_rough;         /* the roughness lines (-ler) */
+	double ler[2];          /* um: the edge at the lower, the higher coordinate */
+	double lwr;             /* um */
+	double corr_length;     /* um; NAN for "-" */
+};
+
+/* One hole of an array (-lcdu -holes). */
+struct measure_hole {
+	double x, y;            /* centroid of its section, um */
+	double cd;              /* um */
 };
 
 /* Writes t atomically: lengths rounded to 1e-6 um, areas to 1e-9 um2,
@@ -48,5 +70,10 @@ void fmt_measure_write(const char *path, const struct measure_table *t);
  * is not a number, no row, no "# cleared yes|no" line. */
 void fmt_measure_read(const char *path, struct measure_table *t);
 void fmt_measure_free(struct measure_table *t);
+
+/* Writes the hole-array table atomically, with the rounding of
+ * fmt_measure_write; lcdu NAN prints "-". */
+void fmt_measure_write_holes(const char *path, const struct measure_hole *h, size_t n,
+			     double lcdu);
 
 #endif
