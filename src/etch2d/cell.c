@@ -18,7 +18,7 @@
  * a is the side normal to the face for one face, the mean side otherwise
  * (cells are square by default).
  */
-#include "etch2d.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -77,7 +77,7 @@ static void remove_cell(struct grid *g, int c)
 	if (k + 1 < g->nz) add_boundary(g, c + g->nx);
 }
 
-void run_cell(struct e2 *e)
+void e2_run_cell(struct e2 *e)
 {
 	struct grid g = {0};
 	e2_cells(e, &g.nx, &g.nz);
