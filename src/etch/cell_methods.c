@@ -1,5 +1,5 @@
 /*
- * cells.c - the two cell methods in 3D (thesis 3.6 and 4.3-4.5.1,
+ * cell_methods.c - the two cell methods in 3D (thesis 3.6 and 4.3-4.5.1,
  * Figure 4.3), so that the thesis' verdict on them can be checked in 3D:
  * -method cell (Dill's cell removal) and -method huygens (the modified,
  * Huygens cell method).  The box is tiled by cubes of side -seg (the
@@ -26,6 +26,7 @@
 #include "etch.h"
 
 #include "fmt_plot.h"
+#include "ptimes.h"
 #include "util.h"
 
 #include <math.h>
@@ -39,6 +40,8 @@
 #define HUYGENS_CELLS_PER_STEP 10
 /* Most steps of a huygens run: beyond, it takes hours (-dt tiny). */
 #define HUYGENS_MAX_STEPS 1e6
+/* Most print times a run may ask for (-pt tiny against -et). */
+#define CELLS_MAX_PRINTS 100000
 
 struct cgrid {
 	int n[3];
@@ -145,23 +148,205 @@ static double dill_speed(const struct cgrid *g, const double *rate, int i, int j
 	return sqrt((double)axes) * R / a;   /* 2 adjacent: sqrt 2; 3 at a corner: sqrt 3 */
 }
 
-void run_cells(const struct rfield *f, const struct etch_opts *o)
+/* The state of Dill's cell removal (thesis 3.2): the fraction left of
+ * every cell, and the boundary cells with their speeds. */
+struct dill {
+	struct cgrid *g;
+	const double *rate;
+	double *fr, *v;                 /* per cell; per boundary cell */
+	size_t *list, *gone, nlist;     /* the boundary; the cells emptied */
+	unsigned char *inlist;
+	long maxb;                      /* the largest boundary */
+};
+
+static void dill_init(struct dill *dl, struct cgrid *g, const double *rate, size_t n)
 {
-	struct cgrid g;
-	memset(&g, 0, sizeof g);
-	double seg = o->seg > 0 ? o->seg : fmax(fmax(f->hi[0] - f->lo[0], f->hi[1] - f->lo[1]),
-						 f->hi[2] - f->lo[2]) / 30;
+	memset(dl, 0, sizeof *dl);
+	dl->g = g;
+	dl->rate = rate;
+	dl->fr = xreallocarray(NULL, n, sizeof *dl->fr);
+	dl->v = xreallocarray(NULL, n, sizeof *dl->v);
+	dl->list = xreallocarray(NULL, n, sizeof *dl->list);
+	dl->gone = xreallocarray(NULL, n, sizeof *dl->gone);
+	dl->inlist = xcalloc(n, 1);
+	for (size_t c = 0; c < n; c++)
+		dl->fr[c] = 1;
+	/* the first boundary: every unetched cell with an exposed face */
+	for (int k = 0; k < g->n[2]; k++)
+		for (int j = 0; j < g->n[1]; j++)
+			for (int i = 0; i < g->n[0]; i++) {
+				size_t c = cidx(g, i, j, k);
+				if (!g->et[c] && dill_speed(g, rate, i, j, k) > 0) {
+					dl->list[dl->nlist++] = c;
+					dl->inlist[c] = 1;
+				}
+			}
+}
+
+static void dill_free(struct dill *dl)
+{
+	free(dl->fr);
+	free(dl->v);
+	free(dl->list);
+	free(dl->gone);
+	free(dl->inlist);
+}
+
+/* One step of Dill's removal from t, up to the next cell emptied or tp;
+ * returns the new time. */
+static double dill_step(struct dill *dl, double t, double tp)
+{
+	struct cgrid *g = dl->g;
+	if ((long)dl->nlist > dl->maxb)
+		dl->maxb = (long)dl->nlist;
+	double step = INFINITY;
+	for (size_t l = 0; l < dl->nlist; l++) {
+		size_t c = dl->list[l];
+		int i = (int)(c % (size_t)g->n[0]), j = (int)(c / (size_t)g->n[0] % (size_t)g->n[1]);
+		int k = (int)(c / ((size_t)g->n[0] * g->n[1]));
+		dl->v[l] = dill_speed(g, dl->rate, i, j, k);
+		if (dl->v[l] > 0 && dl->fr[c] / dl->v[l] < step)
+			step = dl->fr[c] / dl->v[l];
+	}
+	int cap = !(t + step < tp);
+	if (cap)
+		step = tp - t;
+	/* advance every boundary cell; the emptied ones go and their unetched
+	 * neighbours join the boundary */
+	size_t keep = 0, nl = dl->nlist, ngone = 0;
+	for (size_t l = 0; l < nl; l++) {
+		size_t c = dl->list[l];
+		dl->fr[c] -= dl->v[l] * step;
+		if (dl->fr[c] <= F_TINY) {
+			g->et[c] = 1;
+			dl->inlist[c] = 0;
+			dl->gone[ngone++] = c;
+		} else {
+			dl->list[keep++] = c;
+		}
+	}
+	dl->nlist = keep;
+	for (size_t l = 0; l < ngone; l++) {
+		size_t c = dl->gone[l];
+		int i = (int)(c % (size_t)g->n[0]), j = (int)(c / (size_t)g->n[0] % (size_t)g->n[1]);
+		int k = (int)(c / ((size_t)g->n[0] * g->n[1]));
+		int nb[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+				{i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+		for (int e = 0; e < 6; e++) {
+			int a0 = nb[e][0], a1 = nb[e][1], a2 = nb[e][2];
+			if (a0 < 0 || a1 < 0 || a2 < 0 || a0 >= g->n[0] || a1 >= g->n[1] || a2 >= g->n[2])
+				continue;
+			size_t c2 = cidx(g, a0, a1, a2);
+			if (!g->et[c2] && !dl->inlist[c2]) {
+				dl->inlist[c2] = 1;
+				dl->list[dl->nlist++] = c2;
+			}
+		}
+	}
+	return cap ? tp : t + step;
+}
+
+/* One step of the Huygens cell method (thesis 4.3) from t, dt or up to
+ * tp: every etched cell on the boundary etches a ball of radius R dt
+ * around it.  Returns the new time; *maxb the largest boundary. */
+static double huygens_step(struct cgrid *g, const struct rfield *f, double dt, double t,
+			   double tp, long *maxb)
+{
+	double step = dt;
+	int cap = !(t + dt < tp - 1e-12 * tp);
+	if (cap)
+		step = tp - t;
+	size_t bcap = 0, nb = 0;
+	struct bc { int c[3]; double r; } *b = NULL;
+	for (int k = 0; k <= g->n[2]; k++)
+		for (int j = 0; j < g->n[1]; j++)
+			for (int i = 0; i < g->n[0]; i++) {
+				if (!etched_at(g, i, j, k))
+					continue;
+				if ((i > 0 && !etched_at(g, i - 1, j, k)) ||
+				    (i + 1 < g->n[0] && !etched_at(g, i + 1, j, k)) ||
+				    (j > 0 && !etched_at(g, i, j - 1, k)) ||
+				    (j + 1 < g->n[1] && !etched_at(g, i, j + 1, k)) ||
+				    (k > 0 && !etched_at(g, i, j, k - 1)) ||
+				    (k + 1 < g->n[2] && !etched_at(g, i, j, k + 1))) {
+					double p[3] = {cx(g, 0, i), cx(g, 1, j),
+						       k == g->n[2] ? f->hi[2] : cx(g, 2, k)};
+					xgrow(&b, &bcap, nb + 1, sizeof *b);
+					b[nb].c[0] = i, b[nb].c[1] = j, b[nb].c[2] = k;
+					b[nb++].r = rfield_eval(f, p, NULL) * step;
+				}
+			}
+	if ((long)nb > *maxb)
+		*maxb = (long)nb;
+	for (size_t l = 0; l < nb; l++) {
+		double r = b[l].r;
+		if (!(r > 0))
+			continue;
+		int lo[3], hi[3];
+		for (int d = 0; d < 3; d++) {
+			int rr = (int)floor(r / g->h[d]);
+			lo[d] = b[l].c[d] - rr < 0 ? 0 : b[l].c[d] - rr;
+			hi[d] = b[l].c[d] + rr > g->n[d] - 1 ? g->n[d] - 1 : b[l].c[d] + rr;
+		}
+		for (int k = lo[2]; k <= hi[2]; k++)
+			for (int j = lo[1]; j <= hi[1]; j++)
+				for (int i = lo[0]; i <= hi[0]; i++) {
+					double dx = (i - b[l].c[0]) * g->h[0];
+					double dy = (j - b[l].c[1]) * g->h[1];
+					double dz = (k - b[l].c[2]) * g->h[2];
+					if (dx * dx + dy * dy + dz * dz <= r * r)
+						g->et[cidx(g, i, j, k)] = 1;
+				}
+	}
+	free(b);
+	return cap ? tp : t + step;
+}
+
+/* The grid of cells of side about seg over the box of f (dies beyond
+ * CELLS_MAX cells), the rate at every cell's centre in *rate, and the
+ * start: the open top, or the cells of the seed points etched. */
+static size_t cells_setup(struct cgrid *g, const struct rfield *f, const struct etch_opts *o,
+			  double seg, double **rate)
+{
+	memset(g, 0, sizeof *g);
 	double total = 1;
 	for (int d = 0; d < 3; d++) {
-		g.n[d] = (int)fmax(1, ceil((f->hi[d] - f->lo[d]) / seg - 1e-9));
-		g.lo[d] = f->lo[d];
-		g.h[d] = (f->hi[d] - f->lo[d]) / g.n[d];
-		total *= g.n[d];
+		g->n[d] = (int)fmax(1, ceil((f->hi[d] - f->lo[d]) / seg - 1e-9));
+		g->lo[d] = f->lo[d];
+		g->h[d] = (f->hi[d] - f->lo[d]) / g->n[d];
+		total *= g->n[d];
 	}
 	if (total > CELLS_MAX)
 		die("-seg %g: %.0f cells is more than the %.0f allowed (a larger -seg)", seg, total,
 		    CELLS_MAX);
 	size_t n = (size_t)total;
+	g->et = xcalloc(n, 1);
+	double *r = *rate = xreallocarray(NULL, n, sizeof *r);
+	for (int k = 0; k < g->n[2]; k++)
+		for (int j = 0; j < g->n[1]; j++)
+			for (int i = 0; i < g->n[0]; i++) {
+				double p[3] = {cx(g, 0, i), cx(g, 1, j), cx(g, 2, k)};
+				r[cidx(g, i, j, k)] = rfield_eval(f, p, NULL);
+			}
+	g->open_top = o->seed == 0;
+	for (int s = 0; s < o->seed; s++) {
+		int c[3];
+		for (int d = 0; d < 3; d++) {
+			c[d] = (int)floor((o->seedp[s][d] - g->lo[d]) / g->h[d]);
+			c[d] = c[d] < 0 ? 0 : c[d] >= g->n[d] ? g->n[d] - 1 : c[d];
+		}
+		g->et[cidx(g, c[0], c[1], c[2])] = 1;
+	}
+	return n;
+}
+
+void etch_run_cells(const struct rfield *f, const struct etch_opts *o)
+{
+	struct cgrid g;
+	double seg = o->seg > 0 ? o->seg : fmax(fmax(f->hi[0] - f->lo[0], f->hi[1] - f->lo[1]),
+						 f->hi[2] - f->lo[2]) / 30;
+	double *rate;
+	size_t n = cells_setup(&g, f, o, seg, &rate);
 	double dt = o->dt;
 	if (o->method == METHOD_HUYGENS && !(dt > 0))
 		dt = f->rmax > 0 ? HUYGENS_CELLS_PER_STEP * fmin(fmin(g.h[0], g.h[1]), g.h[2]) / f->rmax
@@ -170,168 +355,35 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 		die("%.3g time steps of %g s to -et %g is more than the %.0f allowed (a larger -dt)",
 		    o->et / dt, dt, o->et, HUYGENS_MAX_STEPS);
 	double bounds[6] = {f->lo[0], f->hi[0], f->lo[1], f->hi[1], f->lo[2], f->hi[2]};
-	g.et = xcalloc(n, 1);
-	double *rate = xreallocarray(NULL, n, sizeof *rate);
-	for (int k = 0; k < g.n[2]; k++)
-		for (int j = 0; j < g.n[1]; j++)
-			for (int i = 0; i < g.n[0]; i++) {
-				double p[3] = {cx(&g, 0, i), cx(&g, 1, j), cx(&g, 2, k)};
-				rate[cidx(&g, i, j, k)] = rfield_eval(f, p, NULL);
-			}
-	g.open_top = o->seed == 0;
-	for (int s = 0; s < o->seed; s++) {
-		int c[3];
-		for (int d = 0; d < 3; d++) {
-			c[d] = (int)floor((o->seedp[s][d] - g.lo[d]) / g.h[d]);
-			c[d] = c[d] < 0 ? 0 : c[d] >= g.n[d] ? g.n[d] - 1 : c[d];
-		}
-		g.et[cidx(&g, c[0], c[1], c[2])] = 1;
-	}
 	struct plot_writer *w3 = o->out3d ? fmt_plot_open(o->out3d, 3) : NULL;
 	struct plot_writer *w2 = o->out2d ? fmt_plot_open(o->out2d, 2) : NULL;
 	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
 	fmt_plot_labels(w2, fmt_labels_std(LABELS_TOPVIEW));
-	/* print times: pt, 2 pt, ... below et, then et */
-	double pt = o->pt > 0 ? o->pt : o->et, t = 0;
-	long nprint = (long)floor(o->et / pt + 1e-9);
-	if (nprint > 100000)
+	/* the print times (ptimes.h), at most CELLS_MAX_PRINTS */
+	if (ptimes_count(o->et, o->pt) > CELLS_MAX_PRINTS)
 		die("-pt %g against -et %g: too many print times", o->pt, o->et);
-	double *tps = xreallocarray(NULL, (size_t)nprint + 2, sizeof *tps);
-	int ntp = 0;
-	for (long q = 1; q <= nprint; q++)
-		if (q * pt < o->et - 1e-9)
-			tps[ntp++] = q * pt;
-	tps[ntp++] = o->et;
+	int ntp;
+	double *tps = ptimes_make(o->et, o->pt, &ntp), t = 0;
 	long steps = 0, maxb = 0;
-	double *fr = NULL, *v = NULL;
-	size_t *list = NULL, *gone = NULL, nlist = 0;
-	unsigned char *inlist = NULL;
-	if (o->method == METHOD_CELL) {
-		fr = xreallocarray(NULL, n, sizeof *fr);
-		v = xreallocarray(NULL, n, sizeof *v);
-		list = xreallocarray(NULL, n, sizeof *list);
-		gone = xreallocarray(NULL, n, sizeof *gone);
-		inlist = xcalloc(n, 1);
-		for (size_t c = 0; c < n; c++)
-			fr[c] = 1;
-		/* the first boundary: every unetched cell with an exposed face */
-		for (int k = 0; k < g.n[2]; k++)
-			for (int j = 0; j < g.n[1]; j++)
-				for (int i = 0; i < g.n[0]; i++) {
-					size_t c = cidx(&g, i, j, k);
-					if (!g.et[c] && dill_speed(&g, rate, i, j, k) > 0) {
-						list[nlist++] = c;
-						inlist[c] = 1;
-					}
-				}
-	}
+	struct dill dl;
+	if (o->method == METHOD_CELL)
+		dill_init(&dl, &g, rate, n);
 	for (int q = 0; q < ntp; q++) {
 		double tp = tps[q];
 		while (t < tp) {
-			if (o->method == METHOD_CELL) {
-				if ((long)nlist > maxb)
-					maxb = (long)nlist;
-				double step = INFINITY;
-				for (size_t l = 0; l < nlist; l++) {
-					size_t c = list[l];
-					int i = (int)(c % (size_t)g.n[0]), j = (int)(c / (size_t)g.n[0] % (size_t)g.n[1]);
-					int k = (int)(c / ((size_t)g.n[0] * g.n[1]));
-					v[l] = dill_speed(&g, rate, i, j, k);
-					if (v[l] > 0 && fr[c] / v[l] < step)
-						step = fr[c] / v[l];
-				}
-				int cap = !(t + step < tp);
-				if (cap)
-					step = tp - t;
-				/* advance every boundary cell; the emptied ones go and
-				 * their unetched neighbours join the boundary */
-				size_t keep = 0, nl = nlist, ngone = 0;
-				for (size_t l = 0; l < nl; l++) {
-					size_t c = list[l];
-					fr[c] -= v[l] * step;
-					if (fr[c] <= F_TINY) {
-						g.et[c] = 1;
-						inlist[c] = 0;
-						gone[ngone++] = c;
-					} else {
-						list[keep++] = c;
-					}
-				}
-				nlist = keep;
-				for (size_t l = 0; l < ngone; l++) {
-					size_t c = gone[l];
-					int i = (int)(c % (size_t)g.n[0]), j = (int)(c / (size_t)g.n[0] % (size_t)g.n[1]);
-					int k = (int)(c / ((size_t)g.n[0] * g.n[1]));
-					int nb[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
-							{i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
-					for (int e = 0; e < 6; e++) {
-						int a0 = nb[e][0], a1 = nb[e][1], a2 = nb[e][2];
-						if (a0 < 0 || a1 < 0 || a2 < 0 || a0 >= g.n[0] || a1 >= g.n[1] || a2 >= g.n[2])
-							continue;
-						size_t c2 = cidx(&g, a0, a1, a2);
-						if (!g.et[c2] && !inlist[c2]) {
-							inlist[c2] = 1;
-							list[nlist++] = c2;
-						}
-					}
-				}
-				t = cap ? tp : t + step;
-				steps++;
-			} else {
-				double step = dt;
-				int cap = !(t + dt < tp - 1e-12 * tp);
-				if (cap)
-					step = tp - t;
-				size_t bcap = 0, nb = 0;
-				struct bc { int c[3]; double r; } *b = NULL;
-				for (int k = 0; k <= g.n[2]; k++)
-					for (int j = 0; j < g.n[1]; j++)
-						for (int i = 0; i < g.n[0]; i++) {
-							if (!etched_at(&g, i, j, k))
-								continue;
-							if ((i > 0 && !etched_at(&g, i - 1, j, k)) ||
-							    (i + 1 < g.n[0] && !etched_at(&g, i + 1, j, k)) ||
-							    (j > 0 && !etched_at(&g, i, j - 1, k)) ||
-							    (j + 1 < g.n[1] && !etched_at(&g, i, j + 1, k)) ||
-							    (k > 0 && !etched_at(&g, i, j, k - 1)) ||
-							    (k + 1 < g.n[2] && !etched_at(&g, i, j, k + 1))) {
-								double p[3] = {cx(&g, 0, i), cx(&g, 1, j),
-									       k == g.n[2] ? f->hi[2] : cx(&g, 2, k)};
-								xgrow(&b, &bcap, nb + 1, sizeof *b);
-								b[nb].c[0] = i, b[nb].c[1] = j, b[nb].c[2] = k;
-								b[nb++].r = rfield_eval(f, p, NULL) * step;
-							}
-						}
-				if ((long)nb > maxb)
-					maxb = (long)nb;
-				for (size_t l = 0; l < nb; l++) {
-					double r = b[l].r;
-					if (!(r > 0))
-						continue;
-					int lo[3], hi[3];
-					for (int d = 0; d < 3; d++) {
-						int rr = (int)floor(r / g.h[d]);
-						lo[d] = b[l].c[d] - rr < 0 ? 0 : b[l].c[d] - rr;
-						hi[d] = b[l].c[d] + rr > g.n[d] - 1 ? g.n[d] - 1 : b[l].c[d] + rr;
-					}
-					for (int k = lo[2]; k <= hi[2]; k++)
-						for (int j = lo[1]; j <= hi[1]; j++)
-							for (int i = lo[0]; i <= hi[0]; i++) {
-								double dx = (i - b[l].c[0]) * g.h[0];
-								double dy = (j - b[l].c[1]) * g.h[1];
-								double dz = (k - b[l].c[2]) * g.h[2];
-								if (dx * dx + dy * dy + dz * dz <= r * r)
-									g.et[cidx(&g, i, j, k)] = 1;
-							}
-				}
-				free(b);
-				t = cap ? tp : t + step;
-				steps++;
-			}
+			if (o->method == METHOD_CELL)
+				t = dill_step(&dl, t, tp);
+			else
+				t = huygens_step(&g, f, dt, t, tp, &maxb);
+			steps++;
 		}
 		faces(&g, w3, w2, bounds);
 	}
 	free(tps);
+	if (o->method == METHOD_CELL) {
+		maxb = dl.maxb;
+		dill_free(&dl);
+	}
 	if (!o->quiet)
 		fprintf(stderr, "%s: %s: %d x %d x %d cells of %g um, %ld steps, largest boundary %ld cells\n",
 			util_prog(), o->method == METHOD_CELL ? "cell" : "huygens", g.n[0], g.n[1], g.n[2],
@@ -342,9 +394,4 @@ void run_cells(const struct rfield *f, const struct etch_opts *o)
 		fmt_plot_close(w2);
 	free(g.et);
 	free(rate);
-	free(fr);
-	free(v);
-	free(list);
-	free(gone);
-	free(inlist);
 }
