@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Deepest recursion of the vector check (as etch's advance.c). */
+/* Deepest recursion of the vector check (as etch's ray_advance.c). */
 #define MAX_DEPTH 30
 /* A direction shorter than this after flattening points into the wall. */
 #define FLAT_TINY 1e-12

@@ -9,7 +9,7 @@
 # content, not name), and curves.plot.2D projects the same triangles.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+[ -x "$MKRATE" ] || fail "mkrate not built"
 $MKRATE -o rate.bin 11 9 21 -1 1 -0.8 0.8 -1 0 1 || fail "mkrate"
 $MKRATE -ascii -o rate.txt 11 9 21 -1 1 -0.8 0.8 -1 0 1 || fail "mkrate"
 etch -et 1.5 -pt 0.25 -seg 0.1 -check -q rate.bin || fail "etch failed"
