@@ -158,15 +158,11 @@ fi
 # image.ps, the aerial image when splat ran.  dataplot.ps is the profile
 # (the thesis' name for sample3D's picture).
 [ -z "$last" ] || printtime=""      # -last: the final set only
-times=$(awk -v et="$etchtime" -v pt="${printtime:-0}" 'BEGIN {
-	# the print times as etch takes them: every pt, and the end
-	for (k = 1; ; k++) {
-		t = pt > 0 ? k * pt : et
-		if (t > et * (1 - 1e-12)) t = et
-		printf "%s%.10g", (k > 1 ? "," : ""), t
-		if (t >= et) break
-	}
-}')
+# the print times as etch takes them (etch -print-times: every pt, and
+# the end), comma-separated for -times
+times=$(etch -et "$etchtime" ${printtime:+-pt "$printtime"} -print-times) ||
+	die "etch -print-times failed"
+times=$(printf '%s' "$times" | tr '\n' ',')
 look="-walls -shade"
 [ -z "$hidden" ] || look="-walls"
 # shellcheck disable=SC2086 # stretch and look are lists of words

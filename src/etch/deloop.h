@@ -3,8 +3,11 @@
  * 8.4.3, 8.5 and the future-research list of 10.2).
  *
  * Where etch fronts converge the mesh passes through itself and the part
- * behind the other front (already developed resist) forms a loop.  The
- * pass (deloop.c) works in three stages:
+ * behind the other front (already developed resist) forms a loop.  A run
+ * works in four stages, in these files: stage 1 in deloop_grid.c (the
+ * first search) and deloop_near.c (the searches of later passes, and the
+ * reference search), stages 2 to 4 in deloop.c, the joining of stage 3
+ * in deloop_zip.c:
  *
  *  1. find every segment that crosses the interior of a triangle it does
  *     not touch ("pierces"), through a hashed grid of the triangles (cells
@@ -86,12 +89,12 @@ struct deloop_report {
 	int unjoined;            /* joining left crossings: redone without it */
 };
 
-/* Deloops m at time t (s), classifying with the arrival times fm and the
- * rates f.  Returns the number of loops removed.  The mesh stays
- * consistent (mesh_check); call mesh_compact afterwards. */
 /* -check: compare every search near a pass's changes with a full search
  * (etch dies on a difference). */
 void deloop_set_check(int on);
+/* Deloops m at time t (s), classifying with the arrival times fm and the
+ * rates f.  Returns the number of loops removed.  The mesh stays
+ * consistent (mesh_check); call mesh_compact afterwards. */
 long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep);
 

@@ -35,6 +35,7 @@
 #include "deloop.h"
 
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -158,19 +159,19 @@ static double off_plane(const struct mesh *m, int e, const double *p)
 	const double *a = m->node[tr->n[0]].p;
 	double n[3];
 	tri_normal(a, m->node[tr->n[1]].p, m->node[tr->n[2]].p, n);
-	double nl = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	double nl = sqrt(vec3_dot(n, n)), w[3];
 	if (!(nl > 0))
 		return HUGE_VAL;
-	return fabs(n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2])) / nl;
+	vec3_sub(p, a, w);
+	return fabs(vec3_dot(n, w)) / nl;
 }
 
 static void tri_normal(const double *a, const double *b, const double *c, double n[3])
 {
-	double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-	double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-	n[0] = u[1] * v[2] - u[2] * v[1];
-	n[1] = u[2] * v[0] - u[0] * v[2];
-	n[2] = u[0] * v[1] - u[1] * v[0];
+	double u[3], v[3];
+	vec3_sub(b, a, u);
+	vec3_sub(c, a, v);
+	vec3_cross(u, v, n);
 }
 
 /* Whether moving node del to keep's place turns none of del's triangles

@@ -1,15 +1,27 @@
 /*
- * etch.h - the ray-string development engine (thesis chapters 7 and 8):
- * options, statistics, and the steps of one simulation, each in its own
- * file: start.c (initial surface), advance.c (ray advance), modify.c
- * (cutting and merging), clip.c (clipping), deloop.c (delooping),
- * output.c (plot files) and run.c (the time loop of thesis 8.3).
+ * etch.h - etch, 3D development of a resist (thesis chapters 7 and 8):
+ * the options and statistics every engine shares, and the engines' entry
+ * points.  main.c parses the options and dispatches to one engine; each
+ * engine's files carry its prefix:
+ *
+ *   ray_*.c      the ray-string engine (thesis 8.3): ray_start.c (initial
+ *                surface), ray_advance.c (ray advance), ray_modify.c
+ *                (cutting and merging), ray_clip.c (clipping), ray_output.c
+ *                (plot files) and ray_run.c (the time loop of thesis 8.3),
+ *                over the mesh of mesh.c
+ *   deloop*.c    delooping the ray-string mesh (thesis 8.4.3; deloop.h)
+ *   fmm*.c       the fast-marching engine (fmm.h), run by fmm_run.c
+ *   cell_methods.c  the thesis' cell methods in 3D
+ *
+ * and beside them xcheck.c (the ray-string surface against fast
+ * marching) and estimate.c (the cost of a run before it starts).
  */
 #ifndef ETCH_ETCH_H
 #define ETCH_ETCH_H
 
+#include "fmt_rate.h"
 #include "mesh.h"
-#include "rate.h"
+#include "rfield.h"
 
 /* Defaults (thesis values where the thesis gives one). */
 #define ETCH_SMAX 1.2           /* S_max / S_ideal, thesis 7.5.1.1 and 8.4.1.3 */
@@ -65,6 +77,7 @@ struct etch_opts {
 	int dense;              /* -dense: fmm surfaces uncompacted */
 	double tol;             /* -tol: fmm decimation bound, um (< 0: default) */
 	int dryrun;             /* -n: check the command line only */
+	int print_times;        /* -print-times: print the print times only */
 	const char *input;
 };
 
@@ -76,7 +89,7 @@ struct etch_stats {
 	long cuts, merges, refused, clips, clipped_tris, stopped;
 	long max_nodes, max_tris;
 	long capped;            /* cuts not made: the mesh at its bound */
-	long max_live_tri;      /* that bound, triangles (run.c) */
+	long max_live_tri;      /* that bound, triangles (ray_run.c) */
 	long deloops, loops, looped_tris, crossings_left;   /* deloop.c */
 	double deloop_s;        /* processor time spent delooping, s */
 	double deloop_fmm_s;    /* of which building the classifier, s */
@@ -85,20 +98,20 @@ struct etch_stats {
 					 * last deloop, before joining, and after */
 };
 
-/* cells.c: -method cell and huygens, the thesis' cell methods in 3D
+/* cell_methods.c: -method cell and huygens, the thesis' cell methods in 3D
  * (3.6, 4.3); writes curves.plot and curves.plot.2D itself. */
-void run_cells(const struct rfield *f, const struct etch_opts *o);
+void etch_run_cells(const struct rfield *f, const struct etch_opts *o);
 
-/* start.c: the flat resist top (a regular triangulation of z = zmax with
+/* ray_start.c: the flat resist top (a regular triangulation of z = zmax with
  * segments of length seg, rays (0, 0, -1)) or a seed point. */
 void start_flat(struct mesh *m, const struct rfield *f, double seg);
 void start_seed(struct mesh *m, const double p[3]);
 
-/* advance.c: moves every node by dt along its ray (thesis 8.3 [I]). */
+/* ray_advance.c: moves every node by dt along its ray (thesis 8.3 [I]). */
 void advance_mesh(struct mesh *m, const struct rfield *f, double dt,
 		  const struct etch_opts *o, struct etch_stats *st);
 
-/* modify.c: the triangle-based mesh modification of thesis 8.4.1.3. */
+/* ray_modify.c: the triangle-based mesh modification of thesis 8.4.1.3. */
 void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 		 const struct etch_opts *o, struct etch_stats *st);
 /* The new node between nodes a and b: on the arc their rays define
@@ -106,12 +119,12 @@ void modify_mesh(struct mesh *m, const struct rfield *f, double seg,
 void interp_node(const struct node *a, const struct node *b, int linear,
 		 double p[3], double r[3]);
 
-/* clip.c: clipping against the six faces of the box (thesis 8.4.2). */
+/* ray_clip.c: clipping against the six faces of the box (thesis 8.4.2). */
 void clip_mesh(struct mesh *m, const struct rfield *f, struct etch_stats *st);
 
 /* deloop.c: delooping (thesis 8.4.3); see deloop.h. */
 
-/* output.c */
+/* ray_output.c */
 struct etch_out;
 struct etch_out *out_open(const struct etch_opts *o, const struct rfield *f);
 void out_write(struct etch_out *w, const struct mesh *m);
@@ -122,11 +135,33 @@ struct plot_file;
 void out_cut(const struct mesh *m, int axis, double value, struct plot_file *pf,
 	     const double *bounds);
 
-/* run.c: the whole simulation; returns the final mesh. */
+/* ray_run.c: the whole simulation; returns the final mesh. */
 struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		      struct etch_stats *st);
 /* The default time step and ideal segment length for f (thesis 7.4.1). */
 double etch_default_dt(const struct rfield *f, double seg, double et);
 double etch_default_seg(const struct rfield *f);
+
+/* ray_run.c: the summary of a ray-string run on stderr (sizes, counts,
+ * delooping). */
+void etch_report(const struct etch_opts *o, const struct rfield *f,
+		 const struct mesh *m, const struct etch_stats *st);
+
+/* fmm_run.c: -method fmm, the fast-marching engine (fmm.h): arrival
+ * times on the (refined) rate grid, isosurfaces at the print times, and
+ * the same curves.cut as the ray-string engine. */
+void etch_run_fmm(const struct ratefile *r, const struct rfield *f,
+		  const struct etch_opts *o);
+/* The refinement asked for with -refine, or its auto choice. */
+void etch_fmm_refinement(const struct ratefile *r, const struct etch_opts *o, int refine[3]);
+
+/* xcheck.c: -xcheck, after a ray-string run, the distances of its nodes
+ * from the fast-marching surface at each print time, on stderr. */
+void etch_xcheck(const struct ratefile *r, struct etch_opts *o);
+
+/* estimate.c: the run's seconds and bytes, from the input alone, through
+ * budget_check (dies if over the limits without -big). */
+void etch_estimate(const struct ratefile *r, const struct rfield *f,
+		   const struct etch_opts *o);
 
 #endif

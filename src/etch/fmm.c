@@ -32,8 +32,8 @@
  * only where R is smooth on the grid scale, and where the rate changes
  * several-fold within a cell (a resist at the edge of the image) puts
  * the front behind: on the baked contact of examples/contact at 60 s,
- * 0.12 of an x-y cell on average (issue 12).  The slowness at the nodes
- * of a refined grid comes from the rate grid by trilinear interpolation.
+ * 0.12 of an x-y cell on average.  The slowness at the nodes of a
+ * refined grid comes from the rate grid by trilinear interpolation.
  */
 #include "fmm.h"
 #include "util.h"

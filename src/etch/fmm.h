@@ -153,7 +153,7 @@ size_t fmm_compact(const struct fmm *f, double **v, size_t n, size_t *cap);
 /* Appends to pf (dim 2) one set, with the given bounds (4 values), of the
  * profile where the plane x = value (axis 0) or y = value (axis 1) cuts
  * the developed surface at time t: polylines of (y, z) or (x, z), open
- * chains first then closed loops, as etch's curves.cut (output.c).  The
+ * chains first then closed loops, as etch's curves.cut (ray_output.c).  The
  * substrate where T < t is part of the profile, as in fmm_surface; for
  * t <= 0 it is the resist top. */
 void fmm_cut(const struct fmm *f, double t, int axis, double value,

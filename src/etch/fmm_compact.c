@@ -1,6 +1,6 @@
 /*
  * fmm_compact.c - the fast-marching surface written compactly: flat
- * regions as large triangles (issue 15).
+ * regions as large triangles.
  *
  * Marching tetrahedra (iso.h) cut every grid cell into six tetrahedra, so
  * a horizontal plane - the substrate where the resist has cleared, the
@@ -106,15 +106,13 @@ static void push(double **v, size_t *n, size_t *cap, const double a[3], const do
 	(*n)++;
 }
 
-size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
+/* Sorts the n triangles v into the grid columns (cx a row): each
+ * horizontal one into its column's record (home[t], or -1), and a column
+ * any other triangle touches, or whose horizontal triangles differ in z
+ * or side or do not cover it, marked -1. */
+static void columns(const struct fmm *f, const double *v, size_t n, struct col *c, int *home)
 {
-	double *v = *vp;
-	if (f->n[0] < 2 || f->n[1] < 2 || n == 0)
-		return n;
 	int cx = f->n[0] - 1, cy = f->n[1] - 1;
-	size_t ncol = (size_t)cx * (size_t)cy;
-	struct col *c = xcalloc(ncol, sizeof *c);
-	int *home = xreallocarray(NULL, n, sizeof *home);     /* column or -1 */
 	for (size_t t = 0; t < n; t++) {
 		const double *p = v + 9 * t;
 		home[t] = -1;
@@ -154,8 +152,13 @@ size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
 			if (q->state == 1 && !(fabs(q->area - cell) <= 1e-9 * cell))
 				q->state = -1;
 		}
-	/* the horizontal triangles by column (counting sort), for the perimeters */
-	size_t *start = xcalloc(ncol + 1, sizeof *start);
+}
+
+/* The horizontal triangles by column: bycol[start[q] .. start[q + 1])
+ * are column q's, in their order (a counting sort). */
+static size_t *by_column(const int *home, size_t n, size_t ncol, size_t **startp)
+{
+	size_t *start = *startp = xcalloc(ncol + 1, sizeof *start);
 	for (size_t t = 0; t < n; t++)
 		if (home[t] >= 0)
 			start[home[t] + 1]++;
@@ -168,10 +171,127 @@ size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
 			bycol[start[q] + fill[q]++] = t;
 		}
 	free(fill);
+	return bycol;
+}
+
+/* A rectangle of columns and the triangles of the grid, as compaction
+ * reads them. */
+struct rect {
+	const struct fmm *f;
+	const double *v;                /* the triangles */
+	struct col *c;                  /* the columns, cx a row */
+	int cx;
+	const size_t *start, *bycol;    /* by_column */
+	int i, j, w, h;                 /* the rectangle's first column, size */
+	double X0, X1, Y0, Y1;          /* its sides */
+};
+
+/* The vertices on the perimeter of rectangle r, counter-clockwise from
+ * (X0, Y0), one per place, in *pt; marks its columns 2 and counts their
+ * triangles in *replaced.  Returns the count. */
+static size_t perimeter(const struct rect *r, struct pt **ptp, size_t *cappt, long *replaced)
+{
+	double X0 = r->X0, X1 = r->X1, Y0 = r->Y0, Y1 = r->Y1;
+	double W = X1 - X0, H = Y1 - Y0;
+	size_t npt = 0;
+	*replaced = 0;
+	for (int jj = r->j; jj < r->j + r->h; jj++)
+		for (int ii = r->i; ii < r->i + r->w; ii++) {
+			size_t q = (size_t)jj * (size_t)r->cx + (size_t)ii;
+			r->c[q].state = 2;
+			*replaced += r->c[q].ntri;
+			if (jj != r->j && jj != r->j + r->h - 1 && ii != r->i && ii != r->i + r->w - 1)
+				continue;
+			for (size_t k = r->start[q]; k < r->start[q + 1]; k++)
+				for (int m = 0; m < 3; m++) {
+					const double *p = r->v + 9 * r->bycol[k] + 3 * m;
+					double s;
+					if (p[1] == Y0)
+						s = p[0] - X0;
+					else if (p[0] == X1)
+						s = W + (p[1] - Y0);
+					else if (p[1] == Y1)
+						s = W + H + (X1 - p[0]);
+					else if (p[0] == X0)
+						s = 2 * W + H + (Y1 - p[1]);
+					else
+						continue;
+					xgrow(ptp, cappt, npt + 1, sizeof **ptp);
+					(*ptp)[npt++] = (struct pt){s, p[0], p[1]};
+				}
+		}
+	struct pt *pt;
+	double corner[4][2] = {{X0, Y0}, {X1, Y0}, {X1, Y1}, {X0, Y1}};
+	double cs[4] = {0, W, W + H, 2 * W + H};
+	for (int k = 0; k < 4; k++) {
+		xgrow(ptp, cappt, npt + 1, sizeof **ptp);
+		(*ptp)[npt++] = (struct pt){cs[k], corner[k][0], corner[k][1]};
+	}
+	pt = *ptp;
+	qsort(pt, npt, sizeof *pt, pt_cmp);
+	/* one point per place: tetrahedra that share an edge compute its
+	 * crossing apart, equal only to rounding; the corners, exact, go
+	 * first on ties */
+	double tol = 1e-9 * fmax(r->f->h[0], r->f->h[1]), len = 2 * (W + H);
+	size_t u = 0;
+	for (size_t k = 0; k < npt; k++)
+		if (u == 0 || pt[k].s - pt[u - 1].s > tol)
+			pt[u++] = pt[k];
+		else if (is_corner(&pt[k], corner))
+			pt[u - 1] = pt[k];
+	while (u > 4 && len - pt[u - 1].s <= tol)
+		u--;    /* the last point is the first corner */
+	return u;
+}
+
+/* The large triangles of rectangle r at height z on the side sign: two if
+ * its perimeter is its four corners, else a fan from its centre over the
+ * npt points pt. */
+static void fan(const struct rect *r, double z, int sign, const struct pt *pt, size_t npt,
+		double **add, size_t *nadd, size_t *capadd)
+{
+	double X0 = r->X0, X1 = r->X1, Y0 = r->Y0, Y1 = r->Y1;
+	if (npt == 4) {
+		double a[3] = {X0, Y0, z}, b[3] = {X1, Y0, z}, cc[3] = {X1, Y1, z},
+		       d[3] = {X0, Y1, z};
+		if (sign > 0) {
+			push(add, nadd, capadd, a, b, cc);
+			push(add, nadd, capadd, a, cc, d);
+		} else {
+			push(add, nadd, capadd, a, cc, b);
+			push(add, nadd, capadd, a, d, cc);
+		}
+		return;
+	}
+	double W = X1 - X0, H = Y1 - Y0;
+	double m[3] = {X0 + 0.5 * W, Y0 + 0.5 * H, z};
+	for (size_t k = 0; k < npt; k++) {
+		const struct pt *p = &pt[k], *q = &pt[(k + 1) % npt];
+		double a[3] = {p->x, p->y, z}, b[3] = {q->x, q->y, z};
+		if (sign > 0)
+			push(add, nadd, capadd, m, a, b);
+		else
+			push(add, nadd, capadd, m, b, a);
+	}
+}
+
+size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
+{
+	double *v = *vp;
+	if (f->n[0] < 2 || f->n[1] < 2 || n == 0)
+		return n;
+	int cx = f->n[0] - 1, cy = f->n[1] - 1;
+	size_t ncol = (size_t)cx * (size_t)cy;
+	struct col *c = xcalloc(ncol, sizeof *c);
+	int *home = xreallocarray(NULL, n, sizeof *home);     /* column or -1 */
+	columns(f, v, n, c, home);
+	size_t *start;
+	size_t *bycol = by_column(home, n, ncol, &start);
 	char *drop = xcalloc(n, 1);
 	double *add = NULL;
-	size_t nadd = 0, capadd = 0, npt = 0, cappt = 0;
+	size_t nadd = 0, capadd = 0, cappt = 0;
 	struct pt *pt = NULL;
+	struct rect r = {.f = f, .v = v, .c = c, .cx = cx, .start = start, .bycol = bycol};
 	for (int j = 0; j < cy; j++)
 		for (int i = 0; i < cx; i++) {
 			struct col *q0 = &c[(size_t)j * (size_t)cx + (size_t)i];
@@ -190,57 +310,11 @@ size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
 					break;
 			}
 #undef SAME
-			double X0 = line(f, 0, i), X1 = line(f, 0, i + w);
-			double Y0 = line(f, 1, j), Y1 = line(f, 1, j + h);
-			double W = X1 - X0, H = Y1 - Y0;
-			/* the perimeter's vertices, counter-clockwise from (X0, Y0) */
-			npt = 0;
-			long replaced = 0;
-			for (int jj = j; jj < j + h; jj++)
-				for (int ii = i; ii < i + w; ii++) {
-					size_t q = (size_t)jj * (size_t)cx + (size_t)ii;
-					c[q].state = 2;
-					replaced += c[q].ntri;
-					if (jj != j && jj != j + h - 1 && ii != i && ii != i + w - 1)
-						continue;
-					for (size_t k = start[q]; k < start[q + 1]; k++)
-						for (int m = 0; m < 3; m++) {
-							const double *p = v + 9 * bycol[k] + 3 * m;
-							double s;
-							if (p[1] == Y0)
-								s = p[0] - X0;
-							else if (p[0] == X1)
-								s = W + (p[1] - Y0);
-							else if (p[1] == Y1)
-								s = W + H + (X1 - p[0]);
-							else if (p[0] == X0)
-								s = 2 * W + H + (Y1 - p[1]);
-							else
-								continue;
-							xgrow(&pt, &cappt, npt + 1, sizeof *pt);
-							pt[npt++] = (struct pt){s, p[0], p[1]};
-						}
-				}
-			double corner[4][2] = {{X0, Y0}, {X1, Y0}, {X1, Y1}, {X0, Y1}};
-			double cs[4] = {0, W, W + H, 2 * W + H};
-			for (int k = 0; k < 4; k++) {
-				xgrow(&pt, &cappt, npt + 1, sizeof *pt);
-				pt[npt++] = (struct pt){cs[k], corner[k][0], corner[k][1]};
-			}
-			qsort(pt, npt, sizeof *pt, pt_cmp);
-			/* one point per place: tetrahedra that share an edge compute
-			 * its crossing apart, equal only to rounding; the corners,
-			 * exact, go first on ties */
-			double tol = 1e-9 * fmax(f->h[0], f->h[1]), len = 2 * (W + H);
-			size_t u = 0;
-			for (size_t k = 0; k < npt; k++)
-				if (u == 0 || pt[k].s - pt[u - 1].s > tol)
-					pt[u++] = pt[k];
-				else if (is_corner(&pt[k], corner))
-					pt[u - 1] = pt[k];
-			while (u > 4 && len - pt[u - 1].s <= tol)
-				u--;    /* the last point is the first corner */
-			npt = u;
+			r.i = i, r.j = j, r.w = w, r.h = h;
+			r.X0 = line(f, 0, i), r.X1 = line(f, 0, i + w);
+			r.Y0 = line(f, 1, j), r.Y1 = line(f, 1, j + h);
+			long replaced;
+			size_t npt = perimeter(&r, &pt, &cappt, &replaced);
 			long need = npt == 4 ? 2 : (long)npt;
 			if (need >= replaced)
 				continue;       /* as it was: its columns stay marked 2 */
@@ -250,28 +324,7 @@ size_t fmm_compact(const struct fmm *f, double **vp, size_t n, size_t *capp)
 					for (size_t k = start[q]; k < start[q + 1]; k++)
 						drop[bycol[k]] = 1;
 				}
-			double z = q0->z;
-			if (npt == 4) {
-				double a[3] = {X0, Y0, z}, b[3] = {X1, Y0, z}, cc[3] = {X1, Y1, z},
-				       d[3] = {X0, Y1, z};
-				if (q0->sign > 0) {
-					push(&add, &nadd, &capadd, a, b, cc);
-					push(&add, &nadd, &capadd, a, cc, d);
-				} else {
-					push(&add, &nadd, &capadd, a, cc, b);
-					push(&add, &nadd, &capadd, a, d, cc);
-				}
-				continue;
-			}
-			double m[3] = {X0 + 0.5 * W, Y0 + 0.5 * H, z};
-			for (size_t k = 0; k < npt; k++) {
-				const struct pt *p = &pt[k], *r = &pt[(k + 1) % npt];
-				double a[3] = {p->x, p->y, z}, b[3] = {r->x, r->y, z};
-				if (q0->sign > 0)
-					push(&add, &nadd, &capadd, m, a, b);
-				else
-					push(&add, &nadd, &capadd, m, b, a);
-			}
+			fan(&r, q0->z, q0->sign, pt, npt, &add, &nadd, &capadd);
 		}
 	size_t out = 0;
 	for (size_t t = 0; t < n; t++)

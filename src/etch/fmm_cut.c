@@ -2,10 +2,10 @@
  * fmm_cut.c - the profile of a fast-marching solution along a cutline:
  * where the plane x = v (or y = v) cuts the developed surface at time t,
  * as polylines of (y, z) (or (x, z)), laid out as etch's curves.cut
- * (output.c): open chains first, then closed loops, one set per call.
+ * (ray_output.c): open chains first, then closed loops, one set per call.
  * This is what 2D simulations along cutlines are compared with (thesis
  * Figures 9.14, 9.16), and what the deloop tests compare ray-string
- * profiles against (issue: Figure 8.12's profile).
+ * profiles against (Figure 8.12's profile).
  *
  * T is sampled on the plane at the grid's own nodes of the other two
  * axes (trilinear, so linear between the two slabs around v) and

@@ -1,21 +1,21 @@
 /*
- * etch - 3D development of a resist by the ray-string algorithm (thesis
- * chapters 7 and 8): a triangulated surface is moved through the etch-rate
- * array of bleach, each node along a ray obeying the ray equation.  See
- * man/man1/etch.1 and etch.h.
+ * etch - 3D development of a resist (thesis chapters 7 and 8) through the
+ * etch-rate array of bleach.  This file holds the options and the
+ * dispatch: the ray-string engine (ray_run.c, the default), fast marching
+ * (fmm_run.c) or the cell methods (cell_methods.c), then -xcheck
+ * (xcheck.c) and -vtk.  See man/man1/etch.1 and etch.h.
  */
 #include "args.h"
 #include "budget.h"
 #include "etch.h"
-#include "fmm.h"
 #include "fmt_plot.h"
 #include "fmt_rate.h"
 #include "fmt_vtk.h"
 #include "num.h"
 #include "par.h"
+#include "ptimes.h"
 #include "util.h"
 
-#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +28,7 @@ static const char usage[] =
 	"            [-refine n|nx ny nz|auto] [-dense] [-tol um]\n"
 	"            [-o curves.plot] [-no2d] [-last] [-vtk file.vtp] [-check] [-n] [-q] [-big]\n"
 	"            [-threads n] rate-file\n"
+	"       etch -et etchtime [-pt printtime] -print-times\n"
 	"  -et etchtime     total development time, s (required)\n"
 	"  -pt printtime    print interval, s (default: only the end)\n"
 	"  -dt timestep     time step, s (default: 0.25 / max|grad R|,\n"
@@ -68,6 +69,8 @@ static const char usage[] =
 	"  -check           check the mesh's consistency after every step, and\n"
 	"                   deloop's near searches against a full search\n"
 	"  -n               check the command line only: read and write nothing\n"
+	"  -print-times     print the print times, one a line (to 10 digits), and\n"
+	"                   stop: the times of the sets etch writes\n"
 	"  -q               no progress or summary on stderr\n"
 	"  -big             run work estimated beyond the limits (an hour, the\n"
 	"                   machine's memory; also SAMPLE3D_BIG=1)\n"
@@ -182,6 +185,8 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 			o->dense = 1;
 		else if (args_flag(&a, "-n"))
 			o->dryrun = 1;
+		else if (args_flag(&a, "-print-times"))
+			o->print_times = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
 		else if (args_flag(&a, "-big"))
@@ -212,7 +217,7 @@ static void parse_options(int argc, char **argv, struct etch_opts *o)
 		} else
 			args_operand(&a, (const char **[]){&o->input}, 1, "rate file");
 	}
-	if (!o->input)
+	if (!o->input && !o->print_times)
 		args_error(&a, "no rate file");
 	if (o->et < 0)
 		args_error(&a, "-et etchtime is required");
@@ -311,164 +316,21 @@ static void check_inside(const struct rfield *f, struct etch_opts *o)
 	}
 }
 
-/* The print times: every pt seconds, and the end (run.c hits the same). */
-static double *print_times(const struct etch_opts *o, int *n)
+/* -print-times: the times of the sets, one a line, for the sample3D
+ * driver's picture titles; to 10 significant digits, so that a label
+ * reads 0.3, not the 0.30000000000000004 that 3 x 0.1 is. */
+static void print_times(const struct etch_opts *o)
 {
-	double *times = NULL;
-	size_t cap = 0;
-	*n = 0;
-	for (long k = 1;; k++) {
-		double tp = o->pt > 0 ? k * o->pt : o->et;
-		if (tp > o->et * (1 - 1e-12))
-			tp = o->et;
-		xgrow(&times, &cap, (size_t)*n + 1, sizeof *times);
-		times[(*n)++] = tp;
-		if (tp >= o->et)
-			break;
-	}
-	return times;
-}
-
-/* The refinement asked for with -refine, or its auto choice. */
-static void refinement(const struct ratefile *r, const struct etch_opts *o, int refine[3])
-{
-	for (int d = 0; d < 3; d++)
-		refine[d] = o->refine[d];
-	if (o->refine_auto)
-		refine[2] = fmm_auto_refine(r);
-}
-
-static int cmp_point(const void *a, const void *b)
-{
-	const double *p = a, *q = b;
-	for (int d = 0; d < 3; d++)
-		if (p[d] != q[d])
-			return p[d] < q[d] ? -1 : 1;
-	return 0;
-}
-
-/* Sorts n points (x y z triples) and drops repeats; returns the count. */
-static size_t unique_points(double *p, size_t n)
-{
-	if (n == 0)
-		return 0;
-	qsort(p, n, 3 * sizeof *p, cmp_point);
-	size_t m = 1;
-	for (size_t i = 1; i < n; i++)
-		if (cmp_point(p + 3 * i, p + 3 * (m - 1)) != 0)
-			memmove(p + 3 * m++, p + 3 * i, 3 * sizeof *p);
-	return m;
-}
-
-/* -xcheck: the cross-check of the two engines (etch(1), issue of the
- * fast-marching engine): the vertices of every set of the ray-string
- * curves.plot against the fast-marching surface T = t at its print time,
- * median and 95th percentile of their distances, in um and in rate-grid
- * z cells.  The solve is refined in z as -refine says, by default auto. */
-static void xcheck(const struct ratefile *r, struct etch_opts *o)
-{
-	if (!o->refine_auto && o->refine[0] * o->refine[1] * o->refine[2] == 1)
-		o->refine_auto = 1;
-	int refine[3];
-	refinement(r, o, refine);
-	struct fmm *fm = fmm_solve(r, refine);
-	struct plot_file *pf = fmt_plot_read(o->out3d, 3);
 	int n;
-	double *times = print_times(o, &n);
-	/* the rate grid is anisotropic (a resist has ~0.002 um in z against
-	 * ~0.1 um in x and y): report both cell sizes */
-	double hz = (r->zmax - r->zmin) / (r->nz - 1);
-	double hxy = fmax((r->xmax - r->xmin) / (r->nx - 1), (r->ymax - r->ymin) / (r->ny - 1));
-	for (int k = 0; k < pf->nsets && k < n; k++) {
-		const struct plot_set *set = &pf->sets[k];
-		/* the mesh nodes: each triangle's three corners (its fourth
-		 * point closes it), every node once */
-		double *p = xreallocarray(NULL, (size_t)set->ncurves * 3 + 1, 3 * sizeof *p);
-		size_t np = 0;
-		for (int c = 0; c < set->ncurves; c++)
-			for (int q = 0; q < 3 && q < set->curves[c].npts; q++)
-				memcpy(p + 3 * np++, set->curves[c].p + 3 * q, 3 * sizeof *p);
-		np = unique_points(p, np);
-		double med, p95;
-		fmm_distance_stats(fm, p, np, times[k], &med, &p95);
-		fprintf(stderr, "%s: xcheck t = %g s: %zu nodes from the fast-marching "
-			"surface (z x%d): median %.3g um, 95%% %.3g um (%.2f and %.2f x-y cells, "
-			"%.2f and %.2f z cells)\n", util_prog(), times[k], np, refine[2], med, p95,
-			med / hxy, p95 / hxy, med / hz, p95 / hz);
-		free(p);
+	double *times = ptimes_make(o->et, o->pt, &n);
+	for (int k = 0; k < n; k++) {
+		char buf[32];
+		snprintf(buf, sizeof buf, "%.10g", times[k]);
+		num_print(stdout, strtod(buf, NULL));
+		putchar('\n');
 	}
 	free(times);
-	fmt_plot_free(pf);
-	fmm_free(fm);
-}
-
-/* The fast-marching engine (fmm.h): arrival times on the (refined) rate
- * grid, isosurfaces at the print times, and the same curves.cut as the
- * ray-string engine. */
-static void run_fmm(const struct ratefile *r, const struct rfield *f,
-		    const struct etch_opts *o)
-{
-	int refine[3];
-	refinement(r, o, refine);
-	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, &o->seedp[0][0], o->seed)
-				 : fmm_solve(r, refine);
-	int n;
-	double *times = print_times(o, &n);
-	/* -last: only the final set is written */
-	int first = o->last ? n - 1 : 0;
-	fmm_write_curves(fm, times + first, n - first, o->out3d, o->out2d, o->dense, o->tol);
-	if (o->cut_axis >= 0 && o->outcut) {
-		/* bounds as the ray-string cut: the other axis' range, then z */
-		int other = 1 - o->cut_axis;
-		double bc[4] = {f->lo[other], f->hi[other], f->lo[2], f->hi[2]};
-		struct plot_file *pf = fmt_plot_new(2);
-		pf->labels = *fmt_labels_std(o->cut_axis == 0 ? LABELS_CUT_X : LABELS_CUT_Y);
-		for (int k = first; k < n; k++)
-			fmm_cut(fm, times[k], o->cut_axis, o->cut_value, pf, bc);
-		fmt_plot_write(o->outcut, pf);
-		fmt_plot_free(pf);
-	}
-	if (!o->quiet)
-		fprintf(stderr, "%s: fast marching: refinement %d x %d x %d%s, %ld grid nodes "
-			"reached, %d sets written\n", util_prog(), refine[0], refine[1],
-			refine[2], o->refine_auto ? " (auto)" : "", fm->accepted, n);
-	free(times);
-	fmm_free(fm);
-}
-
-/* Seconds per triangle and time step of the ray-string engine, and per
- * (refined) grid node of fast marching, measured on the development
- * machine; bytes per triangle (with its nodes and segments) and per
- * fast-marching node. */
-static const double T_TRI_STEP = 6e-7, T_FMM_NODE = 2e-6, B_TRI = 400, B_FMM_NODE = 48;
-
-/* The estimate of the run before it starts (budget.h): time steps times
- * the triangles of the start, or the refined grid of fast marching. */
-static void estimate(const struct ratefile *r, const struct rfield *f,
-		     const struct etch_opts *o)
-{
-	char what[128];
-	double secs, bytes;
-	double sets = o->pt > 0 ? ceil(o->et / o->pt) : 1;
-	if (o->method == METHOD_FMM || o->xcheck) {
-		int refine[3];
-		refinement(r, o, refine);
-		double pts = (double)r->nx * r->ny * r->nz * refine[0] * refine[1] * refine[2];
-		snprintf(what, sizeof what, "%.3g fast-marching nodes", pts);
-		budget_check(o->input, what, pts * T_FMM_NODE, pts * B_FMM_NODE + sets * 16);
-		if (o->method == METHOD_FMM)
-			return;
-	}
-	double seg = o->seg > 0 ? o->seg : etch_default_seg(f);
-	double dt = o->dt > 0 ? o->dt : etch_default_dt(f, seg, o->et);
-	double steps = fmax(o->et / dt, sets);
-	double wx = f->hi[0] - f->lo[0], wy = f->hi[1] - f->lo[1], wz = f->hi[2] - f->lo[2];
-	double tris = o->seed ? 20.0 * o->seed : 2 * (wx / seg + 1) * (wy / (seg * sqrt(3) / 2) + 1);
-	double bound = ETCH_MESH_FACTOR * 2 * (wx * wy + wx * wz + wy * wz) / (sqrt(3) / 4 * seg * seg);
-	secs = steps * tris * T_TRI_STEP;
-	bytes = fmin(bound, 1e9) * B_TRI + sets * 16;
-	snprintf(what, sizeof what, "%.3g time steps of a mesh of %.3g triangles", steps, tris);
-	budget_check(o->input, what, secs, bytes);
+	fshut(stdout, "standard output");
 }
 
 int main(int argc, char **argv)
@@ -477,6 +339,10 @@ int main(int argc, char **argv)
 	parse_options(argc, argv, &o);
 	if (o.dryrun)
 		return 0;       /* -n: the options are good (sample3D asks first) */
+	if (o.print_times) {
+		print_times(&o);
+		return 0;
+	}
 	char *n2, *nc;
 	output_names(&o, &n2, &nc);
 	/* the rate only: bleach's other arrays (M) are not read into memory */
@@ -489,51 +355,24 @@ int main(int argc, char **argv)
 	struct rfield f;
 	fmt_rate_field(&f, r, o.input);
 	check_inside(&f, &o);
-	estimate(r, &f, &o);
+	etch_estimate(r, &f, &o);
 	/* curves.plot, its .2D and the cut are committed together (util.h) */
 	aout_defer();
 	if (o.method == METHOD_CELL || o.method == METHOD_HUYGENS) {
-		run_cells(&f, &o);
+		etch_run_cells(&f, &o);
 		aout_finish();
 	} else if (o.method == METHOD_FMM) {
-		run_fmm(r, &f, &o);
+		etch_run_fmm(r, &f, &o);
 		aout_finish();
 	} else {
 		struct etch_stats st = {0};
 		o.rate = r;
 		struct mesh *m = etch_run(&f, &o, &st);
 		aout_finish();
-		if (!o.quiet && st.capped)
-			fprintf(stderr, "%s: the mesh reached its bound of %ld triangles "
-				"(%d times the box's faces): %ld cuts not made; the rate "
-				"varies faster than S_ideal %g um resolves\n", util_prog(),
-				st.max_live_tri, ETCH_MESH_FACTOR, st.capped, st.seg);
-		if (!o.quiet) {
-			fprintf(stderr, "%s: done: %g s in %ld steps of %g s (%s); S_ideal %g um\n",
-				util_prog(), o.et, st.steps, st.dt,
-				o.dt > 0 ? "-dt" : "default: 0.25 / max|grad R|, at most S_ideal / max R",
-				st.seg);
-			fprintf(stderr, "%s: max|grad R| %g /s, max R %g um/s; %ld ray substeps, "
-				"%ld recursive halvings\n", util_prog(), f.gmax, f.rmax,
-				st.substeps, st.halvings);
-			fprintf(stderr, "%s: final mesh %zu nodes, %zu segments, %zu triangles "
-				"(largest %ld nodes, %ld triangles)\n", util_prog(),
-				m->live_node, m->live_seg, m->live_tri, st.max_nodes, st.max_tris);
-			fprintf(stderr, "%s: %ld cuts, %ld merges (%ld refused), %ld clips removing "
-				"%ld triangles, %ld nodes stopped at the substrate\n",
-				util_prog(), st.cuts, st.merges, st.refused, st.clips,
-				st.clipped_tris, st.stopped);
-			if (o.deloop)
-				fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
-					"triangles) in %.3g s (classifier %.3g s); %ld crossings "
-					"left, %ld seam segments joined, %.3g um of border left "
-					"open\n", util_prog(), st.deloops, st.loops, st.looped_tris,
-					st.deloop_s, st.deloop_fmm_s, st.crossings_left,
-					st.seam_joined, st.open_left);
-		}
+		etch_report(&o, &f, m, &st);
 		mesh_free(m);
 		if (o.xcheck)
-			xcheck(r, &o);
+			etch_xcheck(r, &o);
 	}
 	if (o.outvtk) {
 		/* from the plot file just written: the same surfaces whatever

@@ -10,6 +10,7 @@
 #include "mesh.h"
 
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -268,11 +269,10 @@ int mesh_split(struct mesh *m, int s, const double p[3], const double r[3],
 
 static void tri_normal(const double *a, const double *b, const double *c, double nrm[3])
 {
-	double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-	double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-	nrm[0] = u[1] * v[2] - u[2] * v[1];
-	nrm[1] = u[2] * v[0] - u[0] * v[2];
-	nrm[2] = u[0] * v[1] - u[1] * v[0];
+	double u[3], v[3];
+	vec3_sub(b, a, u);
+	vec3_sub(c, a, v);
+	vec3_cross(u, v, nrm);
 }
 
 /* Marks on neighbours: 1 for neighbours of del, 2 added for those of keep. */

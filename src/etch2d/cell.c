@@ -7,8 +7,8 @@
  * above) loses material at the rate R of its centre through its exposed
  * faces: the time to remove a whole cell of side a is a/R with one face,
  * a/(sqrt 2 R) with two adjacent faces (a top and a side), a/(2R) with
- * two opposite faces or three or four (the issue's settlement of the
- * lost Figure 3.1 equations; they give the thesis' octagons).  Each step
+ * two opposite faces or three or four (our reading of the lost Figure 3.1
+ * equations; they give the thesis' octagons).  Each step
  * [I]-[IV]: find the boundary cell that empties first, advance every
  * boundary cell by that time, remove the emptied ones and add their
  * unetched neighbours to the boundary.  Print times cut a step short.
@@ -18,7 +18,7 @@
  * a is the side normal to the face for one face, the mean side otherwise
  * (cells are square by default).
  */
-#include "etch2d.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -77,7 +77,7 @@ static void remove_cell(struct grid *g, int c)
 	if (k + 1 < g->nz) add_boundary(g, c + g->nx);
 }
 
-void run_cell(struct e2 *e)
+void e2_run_cell(struct e2 *e)
 {
 	struct grid g = {0};
 	e2_cells(e, &g.nx, &g.nz);

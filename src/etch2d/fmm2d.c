@@ -16,7 +16,7 @@
  * slides along the top.  The grid has -cells nx nz cells (nodes one more
  * each way); nodes where R = 0 are never reached.
  */
-#include "etch2d.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -179,7 +179,7 @@ static void update_neighbours(double *T, unsigned char *st, const double *R, int
 	}
 }
 
-void run_fmm(struct e2 *e)
+void e2_run_fmm(struct e2 *e)
 {
 	int cx, cz;
 	e2_cells(e, &cx, &cz);

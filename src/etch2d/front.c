@@ -4,14 +4,15 @@
  * (7.4.2) and boundary flattening (7.5.2.2), clipping at the side walls
  * (7.5.2.1) and the substrate (a wall the front slides along, as the
  * fast-marching reference's), segment cutting with arc or linear interpolation (7.5.1.1)
- * and merging (7.5.1.2), and 2D delooping (7.5.3.3).
+ * and merging (7.5.1.2), and 2D delooping (7.5.3.3).  The first string
+ * is front_start.c's.
  *
  * The string is open: it runs from the left wall (or the top, from a
  * seed) to the right wall (or the top), with the resist on the right of
  * the walk.  The ray step itself is the library's (raystep_rk4 over the
  * rfield of the 2D array, y held fixed), the same as etch's in 3D.
  */
-#include "etch2d.h"
+#include "front.h"
 
 #include "util.h"
 
@@ -19,20 +20,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Deepest recursion of the vector check (as etch's advance.c). */
+/* Deepest recursion of the vector check (as etch's ray_advance.c). */
 #define MAX_DEPTH 30
 /* A direction shorter than this after flattening points into the wall. */
 #define FLAT_TINY 1e-12
 /* Ray directions closer to parallel than this (sin of the angle) are cut
  * by linear interpolation: the arc's centre is too far to be useful. */
 #define ARC_PARALLEL 1e-6
-/* Most nodes a string may grow to before the run is refused. */
-#define MAX_NODES 4000000L
 
 void front_push(struct front *fr, double x, double z, double sx, double sz, unsigned flags)
 {
-	if ((long)fr->n >= MAX_NODES)
-		die("the string has grown past %ld nodes: use a larger -seg", MAX_NODES);
+	if ((long)fr->n >= FRONT_MAX_NODES)
+		die("the string has grown past %ld nodes: use a larger -seg", FRONT_MAX_NODES);
 	xgrow(&fr->v, &fr->cap, fr->n + 1, sizeof *fr->v);
 	fr->v[fr->n++] = (struct fnode){{x, z}, {sx, sz}, flags};
 }
@@ -74,38 +73,6 @@ int front_flatten(const struct e2 *e, unsigned flags, double s[2])
 	s[0] /= r;
 	s[1] /= r;
 	return 1;
-}
-
-void front_start(struct e2 *e, struct front *fr, double seg, long nseed)
-{
-	fr->n = 0;
-	if (e->sp) {
-		/* rays fanned as from a seed: nseed over the half circle */
-		front_start_profile(e, fr, seg, nseed > 1 ? M_PI / (double)(nseed - 1) : M_PI / 8);
-		return;
-	}
-	if (e->o.seeded) {
-		for (long k = 0; k < nseed; k++) {
-			double th = M_PI * (double)(nseed - 1 - k) / (double)(nseed - 1);
-			double s[2] = {cos(th), -sin(th)};
-			if (k == 0) s[0] = -1, s[1] = 0;
-			if (k == nseed - 1) s[0] = 1, s[1] = 0;
-			front_push(fr, e->o.seed[0], e->o.seed[1], s[0], s[1], 0);
-			fr->v[fr->n - 1].flags = front_walls(e, fr->v[fr->n - 1].p);
-		}
-		return;
-	}
-	double mm = ceil((e->x1 - e->x0) / seg - 1e-9);
-	if (!(mm < MAX_NODES))
-		die("-seg %g: %.3g nodes across the top, more than the %ld allowed", seg, mm, MAX_NODES);
-	long m = (long)mm;
-	if (m < 1)
-		m = 1;
-	for (long k = 0; k <= m; k++) {
-		double x = k == m ? e->x1 : e->x0 + (e->x1 - e->x0) * (double)k / (double)m;
-		front_push(fr, x, e->z1, 0, -1, 0);
-		fr->v[fr->n - 1].flags = front_walls(e, fr->v[fr->n - 1].p);
-	}
 }
 
 void front_advance_ray(struct e2 *e, struct fnode *n, double dt, int depth)
@@ -277,25 +244,6 @@ void front_remesh(struct e2 *e, struct front *fr, double smax, double smin, int 
 	out.n = k;
 	front_free(fr);
 	*fr = out;
-}
-
-/* 1 if segments p1-p2 and q1-q2 cross (properly), with the crossing's
- * parameter u along p. */
-int e2_crossing(const double *p1, const double *p2, const double *q1, const double *q2,
-		double *u)
-{
-	double r0 = p2[0] - p1[0], r1 = p2[1] - p1[1];
-	double s0 = q2[0] - q1[0], s1 = q2[1] - q1[1];
-	double den = r0 * s1 - r1 * s0;
-	if (den == 0)
-		return 0;
-	double w0 = q1[0] - p1[0], w1 = q1[1] - p1[1];
-	double t = (w0 * s1 - w1 * s0) / den, v = (w0 * r1 - w1 * r0) / den;
-	if (t > 0 && t < 1 && v > 0 && v < 1) {
-		*u = t;
-		return 1;
-	}
-	return 0;
 }
 
 long front_deloop(struct e2 *e, struct front *fr)

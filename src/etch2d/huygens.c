@@ -13,7 +13,7 @@
  * A print time cuts the step before it short.  Default dt: 10 cells of
  * the smaller side at the largest rate (Figure 4.2a).
  */
-#include "etch2d.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -26,7 +26,7 @@
 
 struct bcell { int i, k; double r; };
 
-void run_huygens(struct e2 *e)
+void e2_run_huygens(struct e2 *e)
 {
 	int nx, nz;
 	e2_cells(e, &nx, &nz);

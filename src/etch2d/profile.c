@@ -6,7 +6,7 @@
  * corner, a grid edge), chained here into polylines, so that joining is
  * exact and the output deterministic.
  */
-#include "etch2d.h"
+#include "e2.h"
 
 #include "util.h"
 

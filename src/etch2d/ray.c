@@ -11,7 +11,8 @@
  * top, as many as put them S_ideal apart at the largest rate's reach
  * R_max et.
  */
-#include "etch2d.h"
+#include "front.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -21,7 +22,7 @@
 /* most rays from a seed */
 #define MAX_SEED_RAYS 1000000L
 
-void run_ray(struct e2 *e)
+void e2_run_ray(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};

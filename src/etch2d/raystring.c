@@ -13,7 +13,8 @@
  * half plane); the first step spreads them and arc interpolation fills
  * the circle between.
  */
-#include "etch2d.h"
+#include "front.h"
+#include "methods.h"
 
 #include <math.h>
 
@@ -21,7 +22,7 @@
 #define SMIN 0.1
 #define SEED_RAYS 9
 
-void run_raystring(struct e2 *e)
+void e2_run_raystring(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};

@@ -13,7 +13,7 @@
  * marching with the nodes above it and their first neighbours below given
  * their exact times (signed distance / R).
  */
-#include "etch2d.h"
+#include "e2.h"
 
 #include "util.h"
 
@@ -21,12 +21,29 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* 1 if segments p1-p2 and q1-q2 cross (properly), with the crossing's
+ * parameter u along p. */
+int e2_crossing(const double *p1, const double *p2, const double *q1, const double *q2,
+		double *u)
+{
+	double r0 = p2[0] - p1[0], r1 = p2[1] - p1[1];
+	double s0 = q2[0] - q1[0], s1 = q2[1] - q1[1];
+	double den = r0 * s1 - r1 * s0;
+	if (den == 0)
+		return 0;
+	double w0 = q1[0] - p1[0], w1 = q1[1] - p1[1];
+	double t = (w0 * s1 - w1 * s0) / den, v = (w0 * r1 - w1 * r0) / den;
+	if (t > 0 && t < 1 && v > 0 && v < 1) {
+		*u = t;
+		return 1;
+	}
+	return 0;
+}
+
 /* An end this close (relative to the width or depth) to a wall is on it. */
 #define WALL_TOL 1e-6
 /* Most points a start profile may have (the crossing check is n^2). */
 #define MAX_START 20000
-/* A turn smaller than this (radians) is no corner: one node, no fan. */
-#define TURN_TINY 1e-9
 
 void e2_start_init(struct e2 *e)
 {
@@ -107,72 +124,4 @@ double e2_start_dist(const struct e2 *e, double x, double z, double foot[2])
 		}
 	}
 	return best;
-}
-
-/* Unit normal of segment k into the resist (the right of the walk), or 0
- * if the segment has no length. */
-static int seg_normal(const struct e2 *e, int k, double nrm[2])
-{
-	const double *a = e->sp + 2 * k, *b = a + 2;
-	double tx = b[0] - a[0], tz = b[1] - a[1], l = hypot(tx, tz);
-	if (!(l > 0))
-		return 0;
-	nrm[0] = tz / l, nrm[1] = -tx / l;
-	return 1;
-}
-
-static void push(struct e2 *e, struct front *fr, double x, double z, const double s[2])
-{
-	front_push(fr, x, z, s[0], s[1], 0);
-	fr->v[fr->n - 1].flags = front_walls(e, fr->v[fr->n - 1].p);
-}
-
-void front_start_profile(struct e2 *e, struct front *fr, double seg, double fan)
-{
-	fr->n = 0;
-	int n = e->nsp;
-	double prev[2] = {0, -1};       /* the last segment's normal */
-	int have = 0;
-	for (int k = 0; k < n; k++) {
-		const double *v = e->sp + 2 * k;
-		double nin[2] = {0, 0}, nout[2] = {0, 0};
-		int hin = have, hout = k + 1 < n && seg_normal(e, k, nout);
-		if (hin)
-			nin[0] = prev[0], nin[1] = prev[1];
-		if (!hin) nin[0] = nout[0], nin[1] = nout[1];
-		if (!hout) nout[0] = nin[0], nout[1] = nin[1];
-		/* the turn from the incoming normal to the outgoing one; > 0: a
-		 * left turn, away from the resist: a diverging corner */
-		double turn = atan2(nin[0] * nout[1] - nin[1] * nout[0], nin[0] * nout[0] + nin[1] * nout[1]);
-		if (fan > 0 && turn > TURN_TINY) {
-			long m = (long)ceil(turn / fan);
-			double th0 = atan2(nin[1], nin[0]);
-			for (long q = 0; q <= m; q++) {
-				double th = th0 + turn * (double)q / (double)m;
-				push(e, fr, v[0], v[1], (double[2]){cos(th), sin(th)});
-			}
-		} else {
-			double s[2] = {nin[0] + nout[0], nin[1] + nout[1]}, r = hypot(s[0], s[1]);
-			if (r > 0)
-				s[0] /= r, s[1] /= r;
-			else
-				s[0] = nout[0], s[1] = nout[1];
-			push(e, fr, v[0], v[1], s);
-		}
-		if (!hout)
-			continue;
-		/* nodes at most seg apart along the segment, its normal */
-		const double *w = v + 2;
-		double len = hypot(w[0] - v[0], w[1] - v[1]);
-		double mm = ceil(len / seg - 1e-9);
-		if (!(mm < 4000000.0))
-			die("-seg %g: %.3g nodes along the start profile, too many", seg, mm);
-		long m = (long)mm;
-		for (long q = 1; q < m; q++) {
-			double u = (double)q / (double)m;
-			push(e, fr, v[0] + u * (w[0] - v[0]), v[1] + u * (w[1] - v[1]), nout);
-		}
-		prev[0] = nout[0], prev[1] = nout[1];
-		have = 1;
-	}
 }

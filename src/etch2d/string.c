@@ -11,7 +11,8 @@
  * circle of radius R(seed) t0 (t0 = the step, or more so that the radius
  * reaches S_ideal), the rate taken uniform inside it.
  */
-#include "etch2d.h"
+#include "front.h"
+#include "methods.h"
 
 #include "util.h"
 
@@ -33,7 +34,7 @@ static int normal(const double *a, const double *b, double nrm[2])
 	return 1;
 }
 
-void run_string(struct e2 *e)
+void e2_run_string(struct e2 *e)
 {
 	double seg = front_seg(e), dt = front_dt(e), t = 0;
 	struct front fr = {0};

@@ -7,8 +7,9 @@
  * spacings and rates (uniform, with repeats and zeros, and spiky), at 1,
  * 2 and 3 threads.  Exact equality: the two are the same rounded sums.
  */
+#include "fmt_rate.h"
 #include "par.h"
-#include "rate.h"
+#include "rfield.h"
 
 #include <math.h>
 #include <stdint.h>

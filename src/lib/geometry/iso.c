@@ -15,6 +15,8 @@
  */
 #include "iso.h"
 
+#include "vec3.h"
+
 #include <math.h>
 #include <stddef.h>
 
@@ -96,13 +98,11 @@ static void lerp(const double *a, double fa, double wa, const double *b, double 
 
 static double area2(const double *t)
 {
-	double u[3], v[3];
-	for (int d = 0; d < 3; d++) {
-		u[d] = t[3 + d] - t[d];
-		v[d] = t[6 + d] - t[d];
-	}
-	double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-	return sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+	double u[3], v[3], c[3];
+	vec3_sub(t + 3, t, u);
+	vec3_sub(t + 6, t, v);
+	vec3_cross(u, v, c);
+	return sqrt(vec3_dot(c, c));
 }
 
 /* emits tri, flipped if needed so its normal points along up */
@@ -113,16 +113,14 @@ static long out(double *tri, const double *up, iso_emit emit, void *ctx, double 
 		for (int q = 0; q < 3; q++)
 			for (int d = 0; d < 3; d++)
 				tri[3 * q + d] = fmin(fmax(tri[3 * q + d], b[2 * d]), b[2 * d + 1]);
-	double u[3], v[3];
-	for (int d = 0; d < 3; d++) {
-		u[d] = tri[3 + d] - tri[d];
-		v[d] = tri[6 + d] - tri[d];
-	}
-	double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+	double u[3], v[3], c[3];
+	vec3_sub(tri + 3, tri, u);
+	vec3_sub(tri + 6, tri, v);
+	vec3_cross(u, v, c);
 	/* relative threshold: triangles that the pad layer squeezes to a line */
 	if (area2(tri) <= 1e-12 * scale * scale)
 		return 0;
-	if (c[0] * up[0] + c[1] * up[1] + c[2] * up[2] < 0)
+	if (vec3_dot(c, up) < 0)
 		for (int d = 0; d < 3; d++) {
 			double s = tri[3 + d];
 			tri[3 + d] = tri[6 + d];

@@ -33,7 +33,7 @@
 
 struct cand;
 
-struct mesh {
+struct dmesh {
 	size_t nv, nt;
 	double *p;              /* 3 per vertex */
 	double *q;              /* quadric, 10 per vertex: aa ab ac ad bb bc bd cc cd dd */
@@ -83,7 +83,7 @@ static void bin_of(const double *x, double cell, int64_t b[3])
 		b[d] = (int64_t)floor(x[d] / cell);
 }
 
-static size_t weld(struct mesh *m, const double *v, size_t n, double eps)
+static size_t weld(struct dmesh *m, const double *v, size_t n, double eps)
 {
 	/* a table of vertex numbers, at most half full (3n vertices if no
 	 * two triangles share one; a closed surface has about n/2) */
@@ -192,7 +192,7 @@ static double q_eval(const double *qa, const double *qb, const double *p)
 /* the distinct neighbours of x into *r, marked with the current stamp;
  * with count, also the triangles x shares with each neighbour w in
  * m->cnt[w] (ring_cnt) */
-static size_t ring(struct mesh *m, int x, int **r, size_t *cap, int count)
+static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 {
 	m->stamp++;
 	size_t k = 0;
@@ -218,18 +218,18 @@ static size_t ring(struct mesh *m, int x, int **r, size_t *cap, int count)
 	return k;
 }
 
-static size_t ring_of(struct mesh *m, int x, int **r, size_t *cap)
+static size_t ring_of(struct dmesh *m, int x, int **r, size_t *cap)
 {
 	return ring(m, x, r, cap, 0);
 }
 
-static size_t ring_cnt(struct mesh *m, int x, int **r, size_t *cap)
+static size_t ring_cnt(struct dmesh *m, int x, int **r, size_t *cap)
 {
 	return ring(m, x, r, cap, 1);
 }
 
 /* the live triangles holding both u and v, and their third vertices */
-static int shared(const struct mesh *m, int u, int v, int opp[2])
+static int shared(const struct dmesh *m, int u, int v, int opp[2])
 {
 	int k = 0;
 	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
@@ -246,7 +246,7 @@ static int shared(const struct mesh *m, int u, int v, int opp[2])
 
 /* the checks of the heap's order: the box, the boundary (ns: the
  * triangles holding u and v) and the cost */
-static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
+static int valid_cheap(const struct dmesh *m, int u, int v, int ns, double *cost)
 {
 	if ((m->face[u] & ~m->face[v]) || (m->flag[v] & F_LOCKED))
 		return 0;
@@ -266,7 +266,7 @@ static int valid_cheap(const struct mesh *m, int u, int v, int ns, double *cost)
  * full only the box, the boundary and the cost are checked (the heap's
  * order), with full the topology, orientation and shape too (the
  * input vertices and samples are points_ok's) */
-static int valid(struct mesh *m, int u, int v, double *cost, int full)
+static int valid(struct dmesh *m, int u, int v, double *cost, int full)
 {
 	int opp[2];
 	int ns = shared(m, u, v, opp);
@@ -329,7 +329,7 @@ static double point_tri(const double *p, const double *a, const double *b, const
 
 /* u's live triangles into m->star, and the input vertices they answer
  * for, u included, into m->pts */
-static void gather(struct mesh *m, int u)
+static void gather(struct dmesh *m, int u)
 {
 	m->nstar = m->npts = 0;
 	xgrow(&m->pts, &m->cpts, 1, sizeof *m->pts);
@@ -354,7 +354,7 @@ static void gather(struct mesh *m, int u)
 /* the star's triangle nearest to input vertex w once u is on v (-1: none
  * within tol); with any, the first within tol, from the star's
  * triangle number hint on (the one w belonged to) */
-static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist, int any,
+static long nearest_new(const struct dmesh *m, int u, int v, int w, double *dist, int any,
 			size_t hint)
 {
 	long best = -1;
@@ -381,7 +381,7 @@ static long nearest_new(const struct mesh *m, int u, int v, int w, double *dist,
 }
 
 /* whether q is within tol of input triangle t */
-static int near_one(const struct mesh *m, const double *q, size_t t)
+static int near_one(const struct dmesh *m, const double *q, size_t t)
 {
 	const int *o = m->otv + 3 * t;
 	const float *b = m->osph + 4 * t;
@@ -396,7 +396,7 @@ static int near_one(const struct mesh *m, const double *q, size_t t)
 /* the i-th vertex whose input triangles the samples are checked
  * against (after gather): the tracked input vertices, then the corners
  * of the star once u is on v */
-static int set_vertex(const struct mesh *m, int u, int v, size_t i)
+static int set_vertex(const struct dmesh *m, int u, int v, size_t i)
 {
 	if (i < m->npts)
 		return m->pts[i];
@@ -409,7 +409,7 @@ static int set_vertex(const struct mesh *m, int u, int v, size_t i)
  * within tol of the star, and the star's points on the barycentric grid
  * of step 1/TRI_DECIMATE_SAMPLES within tol of the input triangles
  * around them */
-static int points_ok(struct mesh *m, int u, int v)
+static int points_ok(struct dmesh *m, int u, int v)
 {
 	gather(m, u);
 	for (size_t i = 0; i < m->npts; i++) {
@@ -569,7 +569,7 @@ static int cand_cmp(const void *a, const void *b)
  * alone (checked in full when popped), 1 the cheapest that passes the
  * topology and shape checks (valid), 2 the cheapest that passes every
  * check (valid and points_ok) */
-static void consider(struct mesh *m, struct heap *h, int u, int full)
+static void consider(struct dmesh *m, struct heap *h, int u, int full)
 {
 	m->exact[u] = full == 0;
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
@@ -607,7 +607,7 @@ static void consider(struct mesh *m, struct heap *h, int u, int full)
 	heap_remove(h, u);
 }
 
-static void collapse(struct mesh *m, int u, int v)
+static void collapse(struct dmesh *m, int u, int v)
 {
 	gather(m, u);
 	/* the input vertices go to the nearest triangle of the new star */
@@ -672,7 +672,7 @@ static int hedge_cmp(const void *x, const void *y)
 	return (p->t > q->t) - (p->t < q->t);
 }
 
-static void classify(struct mesh *m, struct tri_decimate_stats *st)
+static void classify(struct dmesh *m, struct tri_decimate_stats *st)
 {
 	size_t ne = 0;
 	struct hedge *e = xreallocarray(NULL, 3 * m->nt + 1, sizeof *e);
@@ -726,24 +726,14 @@ static void classify(struct mesh *m, struct tri_decimate_stats *st)
 	free(nb);
 }
 
-size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
-		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+/* The decimator's arrays for the welded mesh m of nt triangles: the
+ * input triangles' bounding spheres and CSR lists (the sample check),
+ * the box faces and locked sides of each vertex, the vertex-to-corner
+ * lists and each vertex's quadric (the sum of its triangles' planes). */
+static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
+		  double box_eps, const double keep[4])
 {
-	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
-	struct mesh m = {0};
-	m.nv = weld(&m, v, n, weld_eps);
-	/* drop the triangles welding made degenerate */
-	size_t nt = 0;
-	for (size_t t = 0; t < n; t++) {
-		int *a = m.tv + 3 * t;
-		if (a[0] == a[1] || a[1] == a[2] || a[0] == a[2])
-			continue;
-		memmove(m.tv + 3 * nt, a, 3 * sizeof *a);
-		nt++;
-	}
-	m.nt = nt;
-	st.vertices = m.nv;
-	st.in = nt;
+	struct dmesh m = *mp;
 	m.q = xcalloc(10 * m.nv + 1, sizeof *m.q);
 	m.face = xcalloc(m.nv + 1, 1);
 	m.flag = xcalloc(m.nv + 1, 1);
@@ -815,67 +805,125 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 		for (int s = 0; s < 3; s++)
 			q_add_plane(m.q + 10 * (size_t)a[s], nn, m.p + 3 * (size_t)a[0]);
 	}
+	*mp = m;
+}
+
+/* Collapses the cheapest valid edge of m until none is left within tol
+ * (Garland-Heckbert order, every collapse checked against the input
+ * triangles). */
+static void collapse_all(struct dmesh *mp)
+{
+	struct dmesh m = *mp;
+	struct heap h = {NULL, 0, 0, xreallocarray(NULL, m.nv + 1, sizeof *h.pos)};
+	for (size_t i = 0; i < m.nv; i++)
+		h.pos[i] = -1;
+	for (size_t i = 0; i < m.nv; i++)
+		consider(&m, &h, (int)i, 0);
+	int *nb = NULL, *nbc = NULL;
+	size_t cnb = 0, cnbc = 0;
+	while (h.n) {
+		struct entry e = heap_pop(&h);
+		m.exact[e.u] = 0;
+		double c;
+		/* a failed collapse re-ranks u by the checks it failed:
+		 * the topology and shape alone (the input checks, which
+		 * rarely fail, run when the new entry is popped), or
+		 * those and the input checks */
+		if (!valid(&m, e.u, e.v, &c, 1)) {
+			consider(&m, &h, e.u, 1);
+			continue;
+		}
+		if (!points_ok(&m, e.u, e.v)) {
+			consider(&m, &h, e.u, 2);
+			continue;
+		}
+		collapse(&m, e.u, e.v);
+		consider(&m, &h, e.v, 0);
+		/* v's neighbours: only their collapses onto v (v's
+		 * quadric and the triangles they share with it changed)
+		 * or onto u (gone) are not as they were, so one whose
+		 * entry is consider(, 0)'s and aims at neither needs
+		 * only its collapse onto v weighed against it (the
+		 * same entry as a full consider) */
+		size_t k = ring_cnt(&m, e.v, &nb, &cnb);
+		xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
+		for (size_t i = 0; i < k; i++)
+			nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+		for (size_t i = 0; i < k; i++) {
+			int w = nb[i];
+			long p = h.pos[w];
+			if (!m.exact[w] || (p >= 0 && (h.e[p].v == e.u || h.e[p].v == e.v))) {
+				consider(&m, &h, w, 0);
+				continue;
+			}
+			if (m.flag[w] & (F_LOCKED | F_DEAD))
+				continue;
+			if (!valid_cheap(&m, w, e.v, nbc[i], &c))
+				continue;
+			struct cand a = {c, e.v};
+			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+				heap_set(&h, (struct entry){c, w, e.v});
+		}
+	}
+	free(nb);
+	free(nbc);
+	free(h.e);
+	free(h.pos);
+	*mp = m;
+}
+
+static void dmesh_free(struct dmesh *m)
+{
+	free(m->p);
+	free(m->q);
+	free(m->face);
+	free(m->flag);
+	free(m->mark);
+	free(m->cnt);
+	free(m->exact);
+	free(m->head);
+	free(m->next);
+	free(m->tv);
+	free(m->ring);
+	free(m->ring2);
+	free(m->thead);
+	free(m->nbr);
+	free(m->phint);
+	free(m->cands);
+	free(m->otv);
+	free(m->ostart);
+	free(m->otri);
+	free(m->osph);
+	free(m->pnext);
+	free(m->star);
+	free(m->pts);
+}
+
+size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+{
+	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
+	struct dmesh m = {0};
+	m.nv = weld(&m, v, n, weld_eps);
+	/* drop the triangles welding made degenerate */
+	size_t nt = 0;
+	for (size_t t = 0; t < n; t++) {
+		int *a = m.tv + 3 * t;
+		if (a[0] == a[1] || a[1] == a[2] || a[0] == a[2])
+			continue;
+		memmove(m.tv + 3 * nt, a, 3 * sizeof *a);
+		nt++;
+	}
+	m.nt = nt;
+	st.vertices = m.nv;
+	st.in = nt;
+	setup(&m, nt, tol, box, box_eps, keep);
 	classify(&m, &st);
 	for (size_t i = 0; i < m.nv; i++)
 		if (m.flag[i] & F_LOCKED)
 			st.locked++;
-	if (tol > 0) {
-		struct heap h = {NULL, 0, 0, xreallocarray(NULL, m.nv + 1, sizeof *h.pos)};
-		for (size_t i = 0; i < m.nv; i++)
-			h.pos[i] = -1;
-		for (size_t i = 0; i < m.nv; i++)
-			consider(&m, &h, (int)i, 0);
-		int *nb = NULL, *nbc = NULL;
-		size_t cnb = 0, cnbc = 0;
-		while (h.n) {
-			struct entry e = heap_pop(&h);
-			m.exact[e.u] = 0;
-			double c;
-			/* a failed collapse re-ranks u by the checks it failed:
-			 * the topology and shape alone (the input checks, which
-			 * rarely fail, run when the new entry is popped), or
-			 * those and the input checks */
-			if (!valid(&m, e.u, e.v, &c, 1)) {
-				consider(&m, &h, e.u, 1);
-				continue;
-			}
-			if (!points_ok(&m, e.u, e.v)) {
-				consider(&m, &h, e.u, 2);
-				continue;
-			}
-			collapse(&m, e.u, e.v);
-			consider(&m, &h, e.v, 0);
-			/* v's neighbours: only their collapses onto v (v's
-			 * quadric and the triangles they share with it changed)
-			 * or onto u (gone) are not as they were, so one whose
-			 * entry is consider(, 0)'s and aims at neither needs
-			 * only its collapse onto v weighed against it (the
-			 * same entry as a full consider) */
-			size_t k = ring_cnt(&m, e.v, &nb, &cnb);
-			xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
-			for (size_t i = 0; i < k; i++)
-				nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
-			for (size_t i = 0; i < k; i++) {
-				int w = nb[i];
-				long p = h.pos[w];
-				if (!m.exact[w] || (p >= 0 && (h.e[p].v == e.u || h.e[p].v == e.v))) {
-					consider(&m, &h, w, 0);
-					continue;
-				}
-				if (m.flag[w] & (F_LOCKED | F_DEAD))
-					continue;
-				if (!valid_cheap(&m, w, e.v, nbc[i], &c))
-					continue;
-				struct cand a = {c, e.v};
-				if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
-					heap_set(&h, (struct entry){c, w, e.v});
-			}
-		}
-		free(nb);
-		free(nbc);
-		free(h.e);
-		free(h.pos);
-	}
+	if (tol > 0)
+		collapse_all(&m);
 	size_t out = 0;
 	for (size_t t = 0; t < nt; t++) {
 		const int *a = m.tv + 3 * t;
@@ -888,28 +936,6 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	st.out = out;
 	if (stp)
 		*stp = st;
-	free(m.p);
-	free(m.q);
-	free(m.face);
-	free(m.flag);
-	free(m.mark);
-	free(m.cnt);
-	free(m.exact);
-	free(m.head);
-	free(m.next);
-	free(m.tv);
-	free(m.ring);
-	free(m.ring2);
-	free(m.thead);
-	free(m.nbr);
-	free(m.phint);
-	free(m.cands);
-	free(m.otv);
-	free(m.ostart);
-	free(m.otri);
-	free(m.osph);
-	free(m.pnext);
-	free(m.star);
-	free(m.pts);
+	dmesh_free(&m);
 	return out;
 }

@@ -1,5 +1,5 @@
 /*
- * run.c - the time loop of the ray-string algorithm (thesis 8.3): from the
+ * ray_run.c - the time loop of the ray-string algorithm (thesis 8.3): from the
  * initial surface, repeat [I] advance every node along its ray, [II] cut
  * and merge segments, [III] clip every n steps, [IV] deloop if asked
  * (deloop.h: at every print time, and every n steps with -deloop n),
@@ -44,8 +44,8 @@
  * examples/contact (period 0.13 um) at 60 s, 0.1 um segments leave the
  * walls 0.1-0.2 um (up to two cells) inside the fast-marching ones along
  * y = 0, and the deloop classifier then takes whole patches of that
- * lagging front for loops (issue 12: the hole deleted below z =
- * -0.136); 0.05 um segments put them within 0.03 um. */
+ * lagging front for loops (the hole deleted below z = -0.136);
+ * 0.05 um segments put them within 0.03 um. */
 static int cmp_double(const void *a, const void *b)
 {
 	double x = *(const double *)a, y = *(const double *)b;
@@ -267,4 +267,37 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 	out_close(out);
 	fmm_free(fm);
 	return m;
+}
+
+void etch_report(const struct etch_opts *o, const struct rfield *f,
+		 const struct mesh *m, const struct etch_stats *st)
+{
+	if (!o->quiet && st->capped)
+		fprintf(stderr, "%s: the mesh reached its bound of %ld triangles "
+			"(%d times the box's faces): %ld cuts not made; the rate "
+			"varies faster than S_ideal %g um resolves\n", util_prog(),
+			st->max_live_tri, ETCH_MESH_FACTOR, st->capped, st->seg);
+	if (!o->quiet) {
+		fprintf(stderr, "%s: done: %g s in %ld steps of %g s (%s); S_ideal %g um\n",
+			util_prog(), o->et, st->steps, st->dt,
+			o->dt > 0 ? "-dt" : "default: 0.25 / max|grad R|, at most S_ideal / max R",
+			st->seg);
+		fprintf(stderr, "%s: max|grad R| %g /s, max R %g um/s; %ld ray substeps, "
+			"%ld recursive halvings\n", util_prog(), f->gmax, f->rmax,
+			st->substeps, st->halvings);
+		fprintf(stderr, "%s: final mesh %zu nodes, %zu segments, %zu triangles "
+			"(largest %ld nodes, %ld triangles)\n", util_prog(),
+			m->live_node, m->live_seg, m->live_tri, st->max_nodes, st->max_tris);
+		fprintf(stderr, "%s: %ld cuts, %ld merges (%ld refused), %ld clips removing "
+			"%ld triangles, %ld nodes stopped at the substrate\n",
+			util_prog(), st->cuts, st->merges, st->refused, st->clips,
+			st->clipped_tris, st->stopped);
+		if (o->deloop)
+			fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
+				"triangles) in %.3g s (classifier %.3g s); %ld crossings "
+				"left, %ld seam segments joined, %.3g um of border left "
+				"open\n", util_prog(), st->deloops, st->loops, st->looped_tris,
+				st->deloop_s, st->deloop_fmm_s, st->crossings_left,
+				st->seam_joined, st->open_left);
+	}
 }

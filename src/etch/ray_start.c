@@ -1,5 +1,5 @@
 /*
- * start.c - the initial surface of a simulation.
+ * ray_start.c - the initial surface of a simulation.
  *
  * The flat resist top (thesis 8.3): the plane z = zmax over the whole x-y
  * extent of the rate box, triangulated with rows of nodes S_ideal apart
@@ -17,6 +17,7 @@
 
 #include "checked.h"
 #include "util.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -138,13 +139,9 @@ void start_seed(struct mesh *m, const double p[3])
 				if (!ok)
 					continue;
 				double u[3], w[3], n[3], cen = 0;
-				for (int d = 0; d < 3; d++) {
-					u[d] = v[b][d] - v[a][d];
-					w[d] = v[c][d] - v[a][d];
-				}
-				n[0] = u[1] * w[2] - u[2] * w[1];
-				n[1] = u[2] * w[0] - u[0] * w[2];
-				n[2] = u[0] * w[1] - u[1] * w[0];
+				vec3_sub(v[b], v[a], u);
+				vec3_sub(v[c], v[a], w);
+				vec3_cross(u, w, n);
 				for (int d = 0; d < 3; d++)
 					cen += n[d] * (v[a][d] + v[b][d] + v[c][d]);
 				if (cen > 0)

@@ -1,5 +1,5 @@
 /*
- * clip.c - mesh clipping (thesis 8.4.2, Figure 8.9): for each of the six
+ * ray_clip.c - mesh clipping (thesis 8.4.2, Figure 8.9): for each of the six
  * faces of the box in turn, every segment with one node outside and the
  * other inside is cut where it crosses the face (a new node, flagged as
  * on that face, its ray interpolated); then every triangle with a node

@@ -1,5 +1,5 @@
 /*
- * output.c - the files etch writes, one set per print time, through the
+ * ray_output.c - the files etch writes, one set per print time, through the
  * library's plot writer (fmt_plot.h):
  *
  *   curves.plot     pdraw(1) 3D plot: every triangle as a closed 4-point

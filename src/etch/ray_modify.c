@@ -1,5 +1,5 @@
 /*
- * modify.c - mesh modification after every step (thesis 8.4.1): segments
+ * ray_modify.c - mesh modification after every step (thesis 8.4.1): segments
  * longer than S_max are cut, segments shorter than S_min merged, by the
  * triangle-based procedure of 8.4.1.3 (each triangle in list order: cut
  * its longest segment if too long, else merge its shortest if too short),

@@ -1,5 +1,5 @@
 /*
- * advance.c - the ray advance (thesis 8.3 step [I]): every node moves
+ * ray_advance.c - the ray advance (thesis 8.3 step [I]): every node moves
  * along its ray, which turns as the ray equation says, with recursive
  * vector checking (7.4.2), boundary flattening (7.5.2.2) and the
  * substrate stopping the development (8.4.2).
@@ -14,7 +14,7 @@
  * the first-order (Euler) discretisation: expanding R2 = R1 + R1 dt
  * s1 . grad R gives s2 - s1 = -(grad R - (s1 . grad R) s1) dt + O(dt^2).
  * By default the same system is integrated by the classical fourth-order
- * Runge-Kutta rule, which the issue welcomes: the depth reached converges
+ * Runge-Kutta rule, an improvement on the thesis: the depth reached converges
  * as dt^4 instead of dt (tests/etch/040-zonly.sh measures both); -euler
  * selects the thesis' step.  Either way a step is halved recursively while
  * the ray turns by more than the recursive length, |s2 - s1| > l (7.4.2).
