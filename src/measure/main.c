@@ -201,13 +201,14 @@ static void check(const struct options *o, const struct surf *s, long setno, dou
 	}
 }
 
-/* A gap is near a section when its chord (surf.h) passes within this
- * many median triangle edges of the rectangle of the section that decided
- * cd.  A gap on the wall lies on the true contour, which the rectangle's
- * side may miss by about a triangle (the section stops at the triangles
- * beside the gap; a hole's area lines are 1/400 of it apart); 3 edges
- * covers that and stays well below a feature's size (ray-string edges of
- * 0.05 um: 0.15 um). */
+/* A gap is near a section when it (surf.h: a chord between free ends of
+ * the section, or an open edge above the plane seen from above) passes
+ * within this many median triangle edges of the rectangle of the section
+ * that decided cd.  A gap in a wall lies on the true contour, which the
+ * rectangle's side may miss by about a triangle (the section stops at the
+ * triangles beside the gap; a hole's area lines are 1/400 of it apart);
+ * 3 edges covers that and stays well below a feature's size (ray-string
+ * edges of 0.05 um: 0.15 um). */
 #define NEAR_EDGES 3.0
 
 static const char *kind_name(enum kind k)

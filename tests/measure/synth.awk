@@ -10,8 +10,10 @@
 #   corners lie on sector edges); the last point is moved out along each
 #   sector edge to the box's side, so the surface covers the box.
 # ext: the profile (x, z) from the box's xmin to xmax, extruded along y in
-#   M steps (default 7); -v step=h cuts each of its segments into equal
-#   pieces no longer than h um (so that no triangle is long).
+#   M steps (default 7).
+# -v step=h cuts each segment of the profile into equal pieces no longer
+# than h um (but a rev profile's last, out to the box), so that the
+# triangles of the walls are small.
 # Box: -v box="xmin xmax ymin ymax zmin zmax" (default the contact's cell,
 # -2.5 2.5 -2.5 2.5 -0.7 0).  -v gap="a0 a1 i0 i1" leaves out the
 # triangles of sectors (rev) or steps (ext) a0 to a1, counted from 0, on
@@ -45,14 +47,26 @@ BEGIN {
 	if (gap == "") gap = "-1 -1 -1 -1"
 	split(gap, G, " ")
 	pi = atan2(0, -1)
+	# the pieces: piece q from (PX[q], PZ[q]) to (PX[q + 1], PZ[q + 1]),
+	# of the given segment PS[q] (rev: the last, out to the box, is whole)
+	nq = 0; PX[1] = F[1]; PZ[1] = F[2]
+	for (i = 1; i < np; i++) {
+		dx = F[2 * i + 1] - F[2 * i - 1]; dz = F[2 * i + 2] - F[2 * i]
+		n = step > 0 && !(kind == "rev" && i == np - 1) ? int(sqrt(dx * dx + dz * dz) / step) + 1 : 1
+		for (m = 1; m <= n; m++) {
+			nq++; PS[nq] = i
+			PX[nq + 1] = m == n ? F[2 * i + 1] : F[2 * i - 1] + dx * m / n
+			PZ[nq + 1] = m == n ? F[2 * i + 2] : F[2 * i] + dz * m / n
+		}
+	}
 	if (kind == "rev") {
 		for (k = 0; k < N; k++) {
 			t0 = 2 * pi * k / N; t1 = 2 * pi * ((k + 1) % N) / N  # shared edges: equal bits
-			for (i = 1; i < np; i++) {
-				if (hole(k, i)) continue
-				r0 = F[2 * i - 1]; z0 = F[2 * i]; r1 = F[2 * i + 1]; z1 = F[2 * i + 2]
+			for (q = 1; q <= nq; q++) {
+				if (hole(k, PS[q])) continue
+				r0 = PX[q]; z0 = PZ[q]; r1 = PX[q + 1]; z1 = PZ[q + 1]
 				# the outermost ring: on the box's side along the sector edge
-				if (i == np - 1) { e0 = edge(t0); e1 = edge(t1) } else { e0 = r1; e1 = r1 }
+				if (q == nq) { e0 = edge(t0); e1 = edge(t1) } else { e0 = r1; e1 = r1 }
 				if (r0 == 0)
 					tri(0, 0, z0, snap(e0 * cos(t0), 1), snap(e0 * sin(t0), 3), z1,
 					    snap(e1 * cos(t1), 1), snap(e1 * sin(t1), 3), z1)
@@ -62,18 +76,6 @@ BEGIN {
 			}
 		}
 	} else {
-		# the pieces: piece q from (PX[q], PZ[q]) to (PX[q + 1], PZ[q + 1]),
-		# of the given segment PS[q]
-		nq = 0; PX[1] = F[1]; PZ[1] = F[2]
-		for (i = 1; i < np; i++) {
-			dx = F[2 * i + 1] - F[2 * i - 1]; dz = F[2 * i + 2] - F[2 * i]
-			n = step > 0 ? int(sqrt(dx * dx + dz * dz) / step) + 1 : 1
-			for (m = 1; m <= n; m++) {
-				nq++; PS[nq] = i
-				PX[nq + 1] = m == n ? F[2 * i + 1] : F[2 * i - 1] + dx * m / n
-				PZ[nq + 1] = m == n ? F[2 * i + 2] : F[2 * i] + dz * m / n
-			}
-		}
 		for (j = 0; j < M; j++) {
 			y0 = B[3] + (B[4] - B[3]) * j / M; y1 = B[3] + (B[4] - B[3]) * (j + 1) / M
 			for (q = 1; q <= nq; q++)

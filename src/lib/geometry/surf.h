@@ -114,14 +114,18 @@ void surf_border_free(struct surf_border *b);
 /* The total length (um) of the open border. */
 double surf_open_border(const struct surf *s);
 
-/* A gap of a horizontal section.  Where the plane z cuts the surface
+/* The gaps of a horizontal section.  Where the plane z cuts the surface,
  * the open edges that cross it (one end at or above z, the other below,
  * as surf_section takes a vertex on the plane) are free ends of the
  * section's curves; each free end and the free end nearest to it bound a
  * gap, the stretch of curve the surface is missing, taken as the straight
- * chord between them (a point, for a free end alone in the plane). */
+ * chord between them (a point, for a free end alone in the plane).  The
+ * open edges above the plane are gaps of the section too, seen from
+ * above: the vertical-ray test of a point of the section counts the
+ * surface above it, and a ray through a hole in the surface counts wrong
+ * (parts below the plane change nothing at z). */
 struct surf_gap {
-	size_t n;           /* gaps whose chord meets the rectangle */
+	size_t n;           /* gaps that meet the rectangle */
 	double a[2], b[2];  /* of those, the ends of the one whose middle
 			     * is nearest (px, py) */
 };

@@ -309,6 +309,22 @@ static size_t nearest_end(const struct end *e, size_t n, size_t i)
 	return best;
 }
 
+/* Counts gap a-c if it meets rect, keeping the one whose middle is
+ * nearest (px, py). */
+static void consider(struct surf_gap *g, const double *a, const double *c, const double *rect,
+		     double px, double py, double *best)
+{
+	if (!seg_meets_rect(a, c, rect))
+		return;
+	g->n++;
+	double mx = 0.5 * (a[0] + c[0]) - px, my = 0.5 * (a[1] + c[1]) - py;
+	if (mx * mx + my * my < *best) {
+		*best = mx * mx + my * my;
+		memcpy(g->a, a, 2 * sizeof *a);
+		memcpy(g->b, c, 2 * sizeof *c);
+	}
+}
+
 size_t surf_border_at(const struct surf_border *b, double z, const double *rect,
 		      double px, double py, struct surf_gap *g)
 {
@@ -323,16 +339,24 @@ size_t surf_border_at(const struct surf_border *b, double z, const double *rect,
 		if (j < i && nearest_end(e, n, j) == i)
 			continue;
 		double a[2] = {e[i].x, e[i].y}, c[2] = {e[j].x, e[j].y};
-		if (!seg_meets_rect(a, c, rect))
-			continue;
-		g->n++;
-		double mx = 0.5 * (a[0] + c[0]) - px, my = 0.5 * (a[1] + c[1]) - py;
-		if (mx * mx + my * my < best) {
-			best = mx * mx + my * my;
-			memcpy(g->a, a, sizeof a);
-			memcpy(g->b, c, sizeof c);
-		}
+		consider(g, a, c, rect, px, py, &best);
 	}
 	free(e);
+	/* open edges above the plane: the ray test looks up through them */
+	for (size_t i = 0; i < b->n; i++) {
+		const double *p = b->e + 6 * i, *q = p + 3;
+		if (p[2] < z && q[2] < z)
+			continue;
+		if (p[2] < q[2]) {
+			const double *r = p;
+			p = q;
+			q = r;
+		}
+		/* p is above: the part from p down to the plane */
+		double f = q[2] >= z ? 1 : (p[2] - z) / (p[2] - q[2]);
+		double a[2] = {p[0], p[1]};
+		double c[2] = {p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1])};
+		consider(g, a, c, rect, px, py, &best);
+	}
 	return g->n;
 }
