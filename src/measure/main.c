@@ -31,7 +31,8 @@ static const char usage[] =
 	"  -o file         write the table to file (default: standard output)\n"
 	"  -plot file      also write cd against z as a 2D plot file (drawplot)\n"
 	"  -force          measure a surface that crosses itself (loops left by\n"
-	"                  etch without -deloop)\n"
+	"                  etch without -deloop), or a section through a gap of\n"
+	"                  the surface (open border that -deloop left)\n"
 	"  -h, --help      this text\n";
 
 /* A comma-separated list of finite numbers. */

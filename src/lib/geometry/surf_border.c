@@ -10,6 +10,15 @@
  * (equal bits, -0 taken as 0) through a hash table, each edge becomes a
  * pair of vertex numbers, and the pairs are radix-sorted: an edge found
  * once is open.  Time and memory grow with the number of triangles.
+ *
+ * For measure, the open border is also looked at one horizontal section
+ * at a time (surf_border_at): the open edges crossing the plane are the
+ * free ends of the section's curves, joined each to its nearest (found
+ * in x order, stopping when the x distance alone is larger than the best)
+ * into the chords of the gaps, and the open edges above the plane are
+ * gaps the vertical-ray test looks through; each is tested against a
+ * rectangle by clipping (Liang-Barsky).  The median edge length, for
+ * the caller's tolerance, is found by selection, not sorting.
  */
 #include "surf.h"
 #include "util.h"
