@@ -41,10 +41,13 @@ static void measure_row(const struct surf *s, const struct options *o, double z,
 			struct row *row)
 {
 	struct surf_section sec;
-	surf_section(s, lift(s, z), &sec);
+	row->zsec = lift(s, z);
+	surf_section(s, row->zsec, &sec);
 	row->z = z;
 	row->cd = row->a = row->b = row->c = 0;
 	row->edge = 0;
+	row->rect[0] = row->rect[1] = o->x;
+	row->rect[2] = row->rect[3] = o->y;
 	if (o->kind == HOLE) {
 		struct surf_span sx = surf_span_at(s, &sec, 0, o->y, o->x);
 		struct surf_span sy = surf_span_at(s, &sec, 1, o->x, o->y);
@@ -53,13 +56,19 @@ static void measure_row(const struct surf *s, const struct options *o, double z,
 			double wy = s->box[3] - s->box[2];
 			double h = fmin(wy / BOX_LINES, fmin(ex, ey) / HOLE_LINES);
 			h = fmax(h, wy / MAX_LINES);
-			int edge;
-			double area = surf_region_area(s, &sec, o->x, o->y, h, &edge);
-			row->cd = sqrt(4 * area / M_PI);
-			row->a = area;
+			struct surf_region_box rg;
+			surf_region_box(s, &sec, o->x, o->y, h, &rg);
+			row->cd = sqrt(4 * rg.area / M_PI);
+			row->a = rg.area;
 			row->b = ex;
 			row->c = ey;
-			row->edge = edge;
+			row->edge = rg.edge;
+			/* the region, and the extents through the point (a
+			 * line along y may reach a little past the bands) */
+			row->rect[0] = fmin(rg.bbox[0], sx.lo);
+			row->rect[1] = fmax(rg.bbox[1], sx.hi);
+			row->rect[2] = fmin(rg.bbox[2], sy.lo);
+			row->rect[3] = fmax(rg.bbox[3], sy.hi);
 		}
 	} else {
 		double c = o->axis == 0 ? o->y : o->x, t = o->axis == 0 ? o->x : o->y;
@@ -69,6 +78,8 @@ static void measure_row(const struct surf *s, const struct options *o, double z,
 			row->a = sp.lo;
 			row->b = sp.hi;
 			row->edge = box_edge(s, o->axis, sp);
+			row->rect[2 * o->axis] = sp.lo;
+			row->rect[2 * o->axis + 1] = sp.hi;
 		}
 	}
 	surf_section_free(&sec);

@@ -39,6 +39,11 @@ struct row {
 	 * space/line: the ends of the interval along the axis */
 	double a, b, c;
 	int edge;               /* the feature reaches the box edge here */
+	double zsec;            /* the height of the section taken, um */
+	/* the x-y rectangle of the section that decided cd (xmin xmax ymin
+	 * ymax): a hole's region, the stretch of a space or line, the point
+	 * alone where the feature is absent */
+	double rect[4];
 };
 
 struct roughness;

@@ -80,6 +80,14 @@ struct surf_span surf_span_at(const struct surf *s, const struct surf_section *s
  * edge (its area is cut there). */
 double surf_region_area(const struct surf *s, const struct surf_section *sec,
 			double x, double y, double h, int *edge);
+/* The same region with its x-y bounding box (the bands of its lines). */
+struct surf_region_box {
+	double area;        /* um2 */
+	int edge;           /* touches the box edge */
+	double bbox[4];     /* xmin xmax ymin ymax; (x, y) alone if in resist */
+};
+void surf_region_box(const struct surf *s, const struct surf_section *sec,
+		     double x, double y, double h, struct surf_region_box *rg);
 
 /* The highest point of the surface on the vertical plane through the
  * line (axis, c as above), over the stretch lo..hi along it: the top of
@@ -92,9 +100,39 @@ double surf_top_along(const struct surf *s, int axis, double c, double lo, doubl
  * the surface. */
 long surf_crossings(const struct surf *s, long max);
 
-/* The total length (um) of the edges that only one triangle has, other
- * than on the faces of the box: the gaps of the surface. */
+/* The open border: the edges that only one triangle has, other than on
+ * the faces of the box (the gaps of the surface), 6 numbers each (its two
+ * ends x y z), in an order that depends on the surface alone. */
+struct surf_border {
+	size_t n;
+	double *e;
+	double length;      /* their total length, um */
+	double median_edge; /* the median length of the triangles' edges, um */
+};
+void surf_border_find(const struct surf *s, struct surf_border *b);
+void surf_border_free(struct surf_border *b);
+/* The total length (um) of the open border. */
 double surf_open_border(const struct surf *s);
+
+/* The gaps of a horizontal section.  Where the plane z cuts the surface,
+ * the open edges that cross it (one end at or above z, the other below,
+ * as surf_section takes a vertex on the plane) are free ends of the
+ * section's curves; each free end and the free end nearest to it bound a
+ * gap, the stretch of curve the surface is missing, taken as the straight
+ * chord between them (a point, for a free end alone in the plane).  The
+ * open edges above the plane are gaps of the section too, seen from
+ * above: the vertical-ray test of a point of the section counts the
+ * surface above it, and a ray through a hole in the surface counts wrong
+ * (parts below the plane change nothing at z). */
+struct surf_gap {
+	size_t n;           /* gaps that meet the rectangle */
+	double a[2], b[2];  /* of those, the ends of the one whose middle
+			     * is nearest (px, py) */
+};
+/* The gaps of the section at z of the surface whose open border is b
+ * that meet rect (xmin xmax ymin ymax); returns their count. */
+size_t surf_border_at(const struct surf_border *b, double z, const double *rect,
+		      double px, double py, struct surf_gap *g);
 
 /* The squared distance from p to the closest point of triangle a b c,
  * um^2 (Ericson, Real-Time Collision Detection, 5.1.5). */

@@ -282,10 +282,14 @@ static double *bucket_cuts(const struct surf_section *sec, double y, double h,
 	return cut;
 }
 
-double surf_region_area(const struct surf *s, const struct surf_section *sec,
-			double x, double y, double h, int *edge)
+void surf_region_box(const struct surf *s, const struct surf_section *sec,
+		 double x, double y, double h, struct surf_region_box *rg)
 {
 	const double *box = s->box;
+	int *edge = &rg->edge;
+	rg->area = 0;
+	rg->bbox[0] = rg->bbox[1] = x;
+	rg->bbox[2] = rg->bbox[3] = y;
 	long j0 = (long)ceil((box[2] - y) / h), j1 = (long)floor((box[3] - y) / h);
 	while (line_y(y, h, j0) < box[2])
 		j0++;
@@ -294,7 +298,7 @@ double surf_region_area(const struct surf *s, const struct surf_section *sec,
 	long nl = j1 - j0 + 1;
 	*edge = 0;
 	if (nl <= 0)
-		return 0;
+		return;
 	size_t *start = xreallocarray(NULL, (size_t)nl + 1, sizeof *start);
 	double *cut = bucket_cuts(sec, y, h, j0, nl, start);
 
@@ -342,7 +346,7 @@ double surf_region_area(const struct surf *s, const struct surf_section *sec,
 		}
 	/* its area: each span stands for the band of its line, half way to
 	 * the next lines (to the box edge for the first and last) */
-	double area = 0;
+	double area = 0, *bb = rg->bbox;
 	for (long l = 0; l < nl && root != (size_t)-1; l++) {
 		double yl = line_y(y, h, l + j0);
 		double b0 = l == 0 ? box[2] : yl - 0.5 * h;
@@ -353,12 +357,25 @@ double surf_region_area(const struct surf *s, const struct surf_section *sec,
 			area += (dev[k].hi - dev[k].lo) * (b1 - b0);
 			if (dev[k].lo <= box[0] || dev[k].hi >= box[1] || l == 0 || l == nl - 1)
 				*edge = 1;
+			bb[0] = fmin(bb[0], dev[k].lo);
+			bb[1] = fmax(bb[1], dev[k].hi);
+			bb[2] = fmin(bb[2], b0);
+			bb[3] = fmax(bb[3], b1);
 		}
 	}
+	rg->area = area;
 	free(parent);
 	free(lstart);
 	free(dev);
-	return area;
+}
+
+double surf_region_area(const struct surf *s, const struct surf_section *sec,
+			double x, double y, double h, int *edge)
+{
+	struct surf_region_box rg;
+	surf_region_box(s, sec, x, y, h, &rg);
+	*edge = rg.edge;
+	return rg.area;
 }
 
 double surf_top_along(const struct surf *s, int axis, double c, double lo, double hi)
