@@ -46,13 +46,14 @@ LIB_SRC  := $(wildcard src/lib/*/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 LIB      := $(BUILD)/libsample3d.a
 
-DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin,$(if $(wildcard src/$(p)/main.c),$(p)))
+DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin calibfit,$(if $(wildcard src/$(p)/main.c),$(p)))
 PLOT_SRC   := $(wildcard src/plot/*.c)
 PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))
 PLOT_SHARE_OBJ := $(PLOT_SHARE:%.c=$(BUILD)/%.o)
 PROGS    := $(DIR_PROGS) $(PLOT_PROGS)
-BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D $(BUILD)/bin/sample2D $(BUILD)/bin/fem
+BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D $(BUILD)/bin/sample2D $(BUILD)/bin/fem \
+           $(BUILD)/bin/calib
 
 # C unit tests: tests/<area>/*.c, each linked with the library and with the
 # objects of src/<area>/ other than main.o (so tests can call into etch).
@@ -91,6 +92,11 @@ $(BUILD)/bin/sample3D: scripts/sample3D.sh
 $(BUILD)/bin/fem: scripts/fem.sh
 	@mkdir -p $(dir $@)
 	cp scripts/fem.sh $@
+	chmod +x $@
+
+$(BUILD)/bin/calib: scripts/calib.sh
+	@mkdir -p $(dir $@)
+	cp scripts/calib.sh $@
 	chmod +x $@
 
 $(BUILD)/bin/sample2D: scripts/sample2D.sh
@@ -139,6 +145,8 @@ install: all
 	chmod +x $(DESTDIR)$(PREFIX)/bin/sample3D
 	cp scripts/fem.sh $(DESTDIR)$(PREFIX)/bin/fem
 	chmod +x $(DESTDIR)$(PREFIX)/bin/fem
+	cp scripts/calib.sh $(DESTDIR)$(PREFIX)/bin/calib
+	chmod +x $(DESTDIR)$(PREFIX)/bin/calib
 	cp scripts/sample2D.sh $(DESTDIR)$(PREFIX)/bin/sample2D
 	chmod +x $(DESTDIR)$(PREFIX)/bin/sample2D
 	cp man/man1/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
