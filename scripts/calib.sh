@@ -129,11 +129,21 @@ fit() {
 	while [ $k -le "$nfree" ]; do eval "set -- \"\$@\" -free \"\$free_$k\""; k=$((k + 1)); done
 	"$CALIBFIT" "$@"
 }
-start=$(fit -start) || exit $?
+# cf ARGS: fit, calibfit's message (the first line, a usage error's too)
+# becoming calib's, its exit status kept
+msg=$(mktemp "${TMPDIR:-/tmp}/calib.XXXXXX") || die "cannot make a temporary file"
+trap 'rm -f "$msg"' EXIT
+cf() {
+	st=0
+	fit "$@" 2>"$msg" || st=$?
+	sed -n 's/^calibfit: warning: /calib: warning: /p' "$msg" >&2
+	[ $st -eq 0 ] || { echo "$prog: $(grep -v '^calibfit: warning: ' "$msg" | sed -n '1{s/^calibfit: //;p;}')" >&2; exit $st; }
+}
+start=$(cf -start)
 # the measured points, checked by the library's reader, as fem -points wants them
-points=$("$CALIBFIT" -points -data "$data") || exit $?
+points=$(cf -points -data "$data")
 vpoints=""
-[ -z "$validate" ] || vpoints=$("$CALIBFIT" -points -data "$validate") || exit $?
+[ -z "$validate" ] || vpoints=$(cf -points -data "$validate")
 
 mkdir -p "$dir/runs" || die "$dir: cannot make the directory"
 dir=$(cd "$dir" && pwd)
@@ -154,7 +164,7 @@ if cmp -s "$dir/mask.in.new" "$dir/mask.in"; then rm -f "$dir/mask.in.new"; else
 # prepare VALUES [POINTS]: writes the trial resist file, makes its fem
 # directory (images linked from the first run) and prints it
 prepare() {
-	fit -write "$1" -o "$dir/trial.in" || exit $?
+	cf -write "$1" -o "$dir/trial.in"
 	id=$(cksum <"$dir/trial.in" | cut -d' ' -f1)
 	run=$dir/runs/$id${2:+-v}
 	mkdir -p "$run"
@@ -202,6 +212,9 @@ simulate() {
 			printf '\n'
 			for run in $todo; do printf '%s:\n\t@$(MAKE) -k -s --no-print-directory -C %s all\n' "$run" "$run"; done
 		} >"$dir/batch.mk"
+		# one job per core: each etch on one thread (the output is the same)
+		[ -n "${SAMPLE3D_THREADS:-}" ] || [ "$jobs" -lt "$(nproc 2>/dev/null || echo 1)" ] ||
+			export SAMPLE3D_THREADS=1
 		make -k -s --no-print-directory -j "$jobs" -f "$dir/batch.mk" all >"$dir/batch.log" 2>&1 || :
 		# a point that fails (etch, measure) counts as not cleared
 		nfail=$(grep -c '^fem: ' "$dir/batch.log" || :)
@@ -217,13 +230,14 @@ simulate() {
 }
 
 ssr_of() { # ssr_of RUN: "ssr n uncleared"
-	"$CALIBFIT" -ssr -data "$data" -sim "$1/fem.dat"
+	cf -ssr -data "$data" -sim "$1/fem.dat"
 }
 
 # the Jacobian's probes at VALUES: their runs, simulated
 probes() {
 	prun=""
-	for pv in $(fit -probes "$1"); do prun="$prun $(prepare "$pv")"; done
+	pvs=$(cf -probes "$1")
+	for pv in $pvs; do prun="$prun $(prepare "$pv")"; done
 	# shellcheck disable=SC2086
 	simulate $prun
 	jac=$(echo $prun | sed 's|\([^ ]*\)|\1/fem.dat|g; s/ /,/g')
@@ -244,7 +258,7 @@ while :; do
 	probes "$v"
 	rej=0
 	while :; do
-		tv=$(fit -step "$v" -lambda "$lambda" -data "$data" -sim "$cur/fem.dat" -jac "$jac")
+		tv=$(cf -step "$v" -lambda "$lambda" -data "$data" -sim "$cur/fem.dat" -jac "$jac")
 		if [ "$tv" = converged ]; then why="negligible step"; break 2; fi
 		trun=$(prepare "$tv")
 		simulate "$trun"
@@ -265,7 +279,7 @@ done
 say "stopped after $iter iterations ($why): $v"
 
 # the result: resist.fit.in, simulated as written (it is one of the runs)
-fit -write "$v" -o "$dir/resist.fit.in"
+cf -write "$v" -o "$dir/resist.fit.in"
 final=$(prepare "$v")
 simulate "$final"
 vargs=""
@@ -276,7 +290,7 @@ if [ -n "$validate" ]; then
 fi
 st=0
 # shellcheck disable=SC2086
-fit -report "$v" -data "$data" -sim "$final/fem.dat" -jac "$jac" -iter "$iter" $vargs -d "$dir" || st=$?
+(cf -report "$v" -data "$data" -sim "$final/fem.dat" -jac "$jac" -iter "$iter" $vargs -d "$dir") || st=$?
 if [ -s "$dir/bossung.2D" ]; then
 	(cd "$dir" &&
 	"$DRAWPLOT" -noplot -t bossung.tpl -tl "measured (markers) and fitted CD" -xl "focus (um)" \
