@@ -52,8 +52,10 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 # Levenberg-Marquardt control (calib(1), "The fit"): the first damping,
 # the most iterations (Jacobians), the consecutive rejected steps after
 # which no downhill step is left, and the relative fall of the sum of
-# squares below which an accepted step ends the fit.
-LAMBDA0=0.001 MAXITER=30 MAXREJECT=4 SSRTOL=0.0001
+# squares below which an accepted step ends the fit.  A rejected step
+# raises the damping to at least 1 (half the Gauss-Newton step, where a
+# damping of 0.01 would give the same trial again), then ten-fold.
+LAMBDA0=0.001 MAXITER=30 MAXREJECT=3 SSRTOL=0.001
 
 mask="" resist="" etchtime="" data="" margs="" validate="" dir=calib jobs=""
 slurm="" sbopts="" quiet="" etchopts="" method="" etchx=""
@@ -272,7 +274,7 @@ while :; do
 			break
 		fi
 		rej=$((rej + 1))
-		lambda=$(awk -v l="$lambda" 'BEGIN { print l * 10 }')
+		lambda=$(awk -v l="$lambda" 'BEGIN { print (l < 0.1) ? 1 : l * 10 }')
 		if [ $rej -ge $MAXREJECT ]; then why="no downhill step"; break 2; fi
 	done
 done

@@ -49,7 +49,7 @@ void calib_jacobian(int p, const double *v, const double *vprobe,
 /* The Levenberg-Marquardt trial point for damping lambda: solves
  * (J'J + lambda diag(J'J)) d = -J'r and clamps v + d into the ranges.
  * Returns 0 and leaves out = v when the step is negligible (every |d_j|
- * below CALIB_STEP_TOL of the finite-difference step). */
+ * below CALIB_STEP_TOL, 0.01, of the finite-difference step). */
 int calib_step(int p, const struct calib_free *f, const double *v, int n, const double *J,
 	       const double *r, double lambda, double *out);
 /* cov = s2 (J'J)^-1; returns 0 when J'J is singular (cov then infinite

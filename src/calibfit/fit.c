@@ -25,8 +25,9 @@
  * grid, Mth 0.49-0.51: 0.5 nm per 0.2 %), so 1 % is well above the
  * discretisation's jitter and small against the curvature. */
 #define CALIB_FD_REL 0.01
-/* A step below this fraction of every finite-difference step is nil. */
-#define CALIB_STEP_TOL 1e-3
+/* A step below this fraction of every finite-difference step (1e-4 of
+ * the value) is nil: typically a few hundredths of the 1-sigma error. */
+#define CALIB_STEP_TOL 0.01
 
 static int same(double a, double b)
 {
