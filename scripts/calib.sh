@@ -160,6 +160,7 @@ femrun() { # femrun RESIST POINTS DIR [fem options]
 	"$FEM" -q -if "$dir/mask.in" -bf "$r" -et "$etchtime" $etchopts \
 		-measure "$margs" -points "$p" -d "$d" "$@"
 }
+setup="$(cksum <"$mask") $etchtime $etchopts -etch $etchx -measure $margs -points $points"
 cp "$mask" "$dir/mask.in.new"
 if cmp -s "$dir/mask.in.new" "$dir/mask.in"; then rm -f "$dir/mask.in.new"; else mv -f "$dir/mask.in.new" "$dir/mask.in"; fi
 
@@ -167,7 +168,9 @@ if cmp -s "$dir/mask.in.new" "$dir/mask.in"; then rm -f "$dir/mask.in.new"; else
 # directory (images linked from the first run) and prints it
 prepare() {
 	cf -write "$1" -o "$dir/trial.in"
-	id=$(cksum <"$dir/trial.in" | cut -d' ' -f1)
+	# the run's name covers all it depends on: the resist file, and the
+	# setup (mask, time, options, points), so a changed setup gets new runs
+	id=$({ cat "$dir/trial.in"; echo "$setup${2:+ $vpoints}"; } | cksum | cut -d' ' -f1)
 	run=$dir/runs/$id${2:+-v}
 	mkdir -p "$run"
 	mv -f "$dir/trial.in" "$run/trial.in"
@@ -279,6 +282,7 @@ while :; do
 	done
 done
 say "stopped after $iter iterations ($why): $v"
+probes "$v"  # the Jacobian at the result (already there unless the iterations ran out)
 
 # the result: resist.fit.in, simulated as written (it is one of the runs)
 cf -write "$v" -o "$dir/resist.fit.in"

@@ -174,7 +174,7 @@ E
 if [ -n "$points" ]; then
 	[ -z "$doses$foci" ] || bad "-points replaces -dose and -focus"
 	pts=$(for p in $(echo "$points" | tr ',' ' '); do
-		isnum "${p%%:*}" && isnum "${p#*:}" || badv "-points: $p is not focus:dose"
+		[ "${p%%:*}" != "$p" ] && isnum "${p%%:*}" && isnum "${p#*:}" || badv "-points: $p is not focus:dose"
 		awk -v f="${p%%:*}" -v d="${p#*:}" 'BEGIN { printf "%.10g %.10g\n", f + 0, d + 0 }'
 	done) || exit 2
 	foci=$(printf '%s\n' "$pts" | cut -d' ' -f1 | sort -u -g | paste -sd, -)

@@ -10,7 +10,8 @@
 #  - refusals, one line each: a statement absent, too few numbers, a
 #    repeated statement (layer), a start value outside LO:HI (exit 2), a
 #    malformed -free (exit 2), measured tables with a bad row or a repeated
-#    point; and calib's own usage errors exit 2 before anything runs.
+#    point; fem -points with -dose or a malformed point (exit 2); and
+#    calib's own usage errors exit 2 before anything runs.
 . "$TOP/tests/lib/common.sh"
 cat >r.in <<'IN'
 # a resist   with odd spacing
@@ -70,8 +71,16 @@ expect_file_error calibfit neg.dat -points -data neg.dat
 printf '0 80 nan\n' >nan.dat
 expect_file_error calibfit nan.dat -points -data nan.dat
 
-# calib: usage errors exit 2, one line, before anything runs
+# fem -points: refused with -dose or -focus, or with a point that is not
+# focus:dose (exit 2, nothing made)
+cp "$TOP/examples/contact/resist.in" c.in
 cp "$TOP/examples/contact/mask.in" mask.in
+for pts in "0:80 -dose 80" "0,80" "0:x" "0:80:90"; do
+	# shellcheck disable=SC2086
+	usage_error fem -if mask.in -bf c.in -et 60 -measure "-rel 5 -hole 0 0" -points $pts -d fout
+	[ ! -e fout ] || fail "fem -points $pts: made its directory"
+done
+# calib: usage errors exit 2, one line, before anything runs
 ok="-if mask.in -bf r.in -et 60 -data m.dat -measure"
 for args in "$ok -rel,5" "-if mask.in -bf r.in -et 60 -data m.dat -measure -rel -free x" \
 	"$ok x -free" "$ok x -free a -zz"; do
