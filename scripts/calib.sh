@@ -270,7 +270,7 @@ while :; do
 		set -- $(ssr_of "$trun")
 		if awk -v a="$1" -v b="$ssr" 'BEGIN { exit !(a < b) }'; then
 			small=$(awk -v a="$1" -v b="$ssr" -v t=$SSRTOL 'BEGIN { print (b - a <= t * b) ? 1 : 0 }')
-			say "iteration $iter: $tv rms $(awk -v s="$1" -v n="$npt" 'BEGIN { printf "%.3f", 1000 * sqrt(s / n) }') nm${3:+ ($3 not cleared)}"
+			say "iteration $iter: $tv rms $(awk -v s="$1" -v n="$npt" 'BEGIN { printf "%.3f", 1000 * sqrt(s / n) }') nm$([ "$3" = 0 ] || echo " ($3 not cleared)")"
 			v=$tv cur=$trun ssr=$1
 			lambda=$(awk -v l="$lambda" 'BEGIN { l /= 10; print (l < 1e-7) ? 1e-7 : l }')
 			if [ "$small" = 1 ]; then why="sum of squares settled"; probes "$v"; break 2; fi
