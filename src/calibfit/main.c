@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 static const char usage[] =
 	"usage: calibfit -bf resist.in -free \"STATEMENT K LO:HI\" [-free ...] JOB\n"
@@ -66,6 +67,15 @@ static int parse_free(const char *spec, struct calib_free *f)
 	f->k = (int)k;
 	f->spec = spec;
 	return 1;
+}
+
+/* 1 if f names a number an earlier -free already frees. */
+static int freed_before(const struct options *o, const struct calib_free *f)
+{
+	for (int j = 0; j < o->nfree; j++)
+		if (o->free[j].k == f->k && strcasecmp(o->free[j].stmt, f->stmt) == 0)
+			return 1;
+	return 0;
 }
 
 static void set_job(struct args *a, struct options *o, enum job j, const char *opt)
@@ -119,6 +129,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 				args_error(&a, "at most %d -free", CALIB_MAX_FREE);
 			else if (!parse_free(spec, &o->free[o->nfree]))
 				args_error(&a, "-free \"%s\": expected \"STATEMENT K LO:HI\" (K from 1, LO < HI)", spec);
+			else if (freed_before(o, &o->free[o->nfree]))
+				args_error(&a, "-free \"%s\": that number is already free", spec);
 			else
 				o->nfree++;
 		} else if (args_flag(&a, "-start")) {

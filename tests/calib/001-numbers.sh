@@ -55,6 +55,8 @@ for spec in "develop 3" "develop 0 0:1" "develop 3 1:0" "develop x 0:1" "develop
 	usage_error calibfit -bf r.in -free "$spec" -start
 	grep -q "expected \"STATEMENT K LO:HI\"" err.txt || fail "-free \"$spec\": $(head -n 1 err.txt)"
 done
+usage_error calibfit -bf r.in -free "$F1" -free "develop 3 0.4:0.6" -start
+grep -q "already free" err.txt || fail "the same number freed twice: $(head -n 1 err.txt)"
 # a value that bleach refuses (Mth must be below 1) is not written
 expect_error calibfit -bf r.in -free "develop 3 0:2" -write 1.5 -o bad.in
 [ ! -e bad.in ] || fail "a refused resist file was written"
