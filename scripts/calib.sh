@@ -52,10 +52,12 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 # Levenberg-Marquardt control (calib(1), "The fit"): the first damping,
 # the most iterations (Jacobians), the consecutive rejected steps after
 # which no downhill step is left, and the relative fall of the sum of
-# squares below which an accepted step ends the fit.  A rejected step
-# raises the damping to at least 1 (half the Gauss-Newton step, where a
-# damping of 0.01 would give the same trial again), then ten-fold.
-LAMBDA0=0.001 MAXITER=30 MAXREJECT=3 SSRTOL=0.001
+# squares below which an accepted step ends the fit.  A rejected step is
+# tried again at half and a quarter of its length along the same
+# direction (correlated parameters lie in a long curved valley, along
+# which the Gauss-Newton direction points while a larger damping turns
+# the step across it), then with the damping raised to at least 1.
+LAMBDA0=0.001 MAXITER=30 MAXREJECT=4 SSRTOL=0.001
 
 mask="" resist="" etchtime="" data="" margs="" validate="" dir=calib jobs=""
 slurm="" sbopts="" quiet="" etchopts="" method="" etchx=""
@@ -261,9 +263,9 @@ while :; do
 	if [ $iter -ge $MAXITER ]; then why="$MAXITER iterations"; break; fi
 	iter=$((iter + 1))
 	probes "$v"
-	rej=0
+	rej=0 scale=1
 	while :; do
-		tv=$(cf -step "$v" -lambda "$lambda" -data "$data" -sim "$cur/fem.dat" -jac "$jac")
+		tv=$(cf -step "$v" -lambda "$lambda" -scale $scale -data "$data" -sim "$cur/fem.dat" -jac "$jac")
 		if [ "$tv" = converged ]; then why="negligible step"; break 2; fi
 		trun=$(prepare "$tv")
 		simulate "$trun"
@@ -277,7 +279,11 @@ while :; do
 			break
 		fi
 		rej=$((rej + 1))
-		lambda=$(awk -v l="$lambda" 'BEGIN { print (l < 0.1) ? 1 : l * 10 }')
+		case $rej in
+		1) scale=0.5 ;;
+		2) scale=0.25 ;;
+		*) scale=1 lambda=$(awk -v l="$lambda" 'BEGIN { print (l < 0.1) ? 1 : l * 10 }') ;;
+		esac
 		if [ $rej -ge $MAXREJECT ]; then why="no downhill step"; break 2; fi
 	done
 done

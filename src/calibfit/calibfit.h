@@ -47,11 +47,12 @@ double calib_round(double v);
 void calib_jacobian(int p, const double *v, const double *vprobe,
 		    const struct calib_points *base, const struct calib_points *probe, double *J);
 /* The Levenberg-Marquardt trial point for damping lambda: solves
- * (J'J + lambda diag(J'J)) d = -J'r and clamps v + d into the ranges.
+ * (J'J + lambda diag(J'J)) d = -J'r and clamps v + scale d into the
+ * ranges (scale below 1: a shorter step along the same direction).
  * Returns 0 and leaves out = v when the step is negligible (every |d_j|
  * below CALIB_STEP_TOL, 0.01, of the finite-difference step). */
 int calib_step(int p, const struct calib_free *f, const double *v, int n, const double *J,
-	       const double *r, double lambda, double *out);
+	       const double *r, double lambda, double scale, double *out);
 /* cov = s2 (J'J)^-1; returns 0 when J'J is singular (cov then infinite
  * on the diagonal of every parameter without effect). */
 int calib_covariance(int p, int n, const double *J, double s2, double *cov);

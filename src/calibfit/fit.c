@@ -152,7 +152,7 @@ static void normal(int p, int n, const double *J, const double *r, double *A, do
 }
 
 int calib_step(int p, const struct calib_free *f, const double *v, int n, const double *J,
-	       const double *r, double lambda, double *out)
+	       const double *r, double lambda, double scale, double *out)
 {
 	double A[CALIB_MAX_FREE * CALIB_MAX_FREE], g[CALIB_MAX_FREE];
 	normal(p, n, J, r, A, g);
@@ -173,11 +173,11 @@ int calib_step(int p, const struct calib_free *f, const double *v, int n, const 
 			g[j] = 0;
 	int moved = 0;
 	for (int j = 0; j < p; j++) {
-		double w = calib_round(fmin(fmax(v[j] + g[j], f[j].lo), f[j].hi));
 		double h = fabs(calib_probe_value(&f[j], v[j]) - v[j]);
+		double w = calib_round(fmin(fmax(v[j] + g[j], f[j].lo), f[j].hi));
 		if (fabs(w - v[j]) > CALIB_STEP_TOL * h)
 			moved = 1;
-		out[j] = w;
+		out[j] = calib_round(fmin(fmax(v[j] + scale * g[j], f[j].lo), f[j].hi));
 	}
 	if (!moved)
 		memcpy(out, v, (size_t)p * sizeof *out);

@@ -29,8 +29,9 @@ static const char usage[] =
 	"  -ssr -data m.dat -sim fem.dat\n"
 	"                         print the sum of squared residuals (um2), the number\n"
 	"                         of points and of points that did not clear\n"
-	"  -step V -lambda L -data m.dat -sim fem.dat -jac f1.dat,f2.dat,...\n"
-	"                         print the Levenberg-Marquardt trial point, or\n"
+	"  -step V -lambda L [-scale S] -data m.dat -sim fem.dat -jac f1.dat,f2.dat,...\n"
+	"                         print the Levenberg-Marquardt trial point (S times\n"
+	"                         the step, default 1), or\n"
 	"                         \"converged\" when the step is negligible\n"
 	"  -report V -data m.dat -sim fem.dat -jac f1.dat,... [-iter N]\n"
 	"          [-vdata v.dat -vsim vfem.dat] -d DIR\n"
@@ -43,7 +44,7 @@ enum job { J_NONE, J_START, J_WRITE, J_PROBES, J_POINTS, J_SSR, J_STEP, J_REPORT
 struct options {
 	enum job job;
 	const char *bf, *values, *out, *data, *sim, *jac, *vdata, *vsim, *dir;
-	double lambda;
+	double lambda, scale;
 	long iter;
 	int have_lambda;
 	int nfree;
@@ -121,6 +122,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	args_init(&a, argc, argv);
 	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
+	o->scale = 1;
 	while (a.i < argc) {
 		args_help_exit(&a, 1);
 		const char *spec;
@@ -147,6 +149,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			set_job(&a, o, J_STEP, "-step");
 		} else if (args_str(&a, "-report", &o->values)) {
 			set_job(&a, o, J_REPORT, "-report");
+		} else if (args_num(&a, "-scale", 1e-6, 1, &o->scale)) {
+			;
 		} else if (args_num(&a, "-lambda", 0, 1e300, &o->lambda)) {
 			o->have_lambda = 1;
 		} else if (args_int(&a, "-iter", 0, 1000000, &o->iter) ||
@@ -259,7 +263,7 @@ static void step(const struct options *o, const double *v, const struct fem_tabl
 	for (int i = 0; i < meas->n; i++)
 		r[i] = base.cd[i] - meas->p[i].cd;
 	double w[CALIB_MAX_FREE];
-	if (calib_step(o->nfree, o->free, v, meas->n, J, r, o->lambda, w))
+	if (calib_step(o->nfree, o->free, v, meas->n, J, r, o->lambda, o->scale, w))
 		print_values(o->nfree, w);
 	else
 		puts("converged");
