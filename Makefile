@@ -46,13 +46,13 @@ LIB_SRC  := $(wildcard src/lib/*/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 LIB      := $(BUILD)/libsample3d.a
 
-DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin,$(if $(wildcard src/$(p)/main.c),$(p)))
+DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin calibfit,$(if $(wildcard src/$(p)/main.c),$(p)))
 PLOT_SRC   := $(wildcard src/plot/*.c)
 PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))
 PLOT_SHARE_OBJ := $(PLOT_SHARE:%.c=$(BUILD)/%.o)
 PROGS    := $(DIR_PROGS) $(PLOT_PROGS)
-DRIVERS  := sample3D sample2D fem
+DRIVERS  := sample3D sample2D fem calib
 BINS     := $(PROGS:%=$(BUILD)/bin/%) $(DRIVERS:%=$(BUILD)/bin/%) $(BUILD)/bin/etchopts.sh
 
 # C unit tests: tests/<area>/*.c, each linked with the library and with the

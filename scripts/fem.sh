@@ -22,6 +22,7 @@ usage() {
 	cat <<'U'
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
+           (or -points F:D,F:D,... instead of -dose and -focus)
            [-target CD -tol PCT] [-d DIR] [-j N] [-keep] [-n]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
@@ -30,6 +31,7 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
   -et T         development time (s)
   -dose LIST    doses (mJ/cm2): first:last:step or a list a,b,c
   -focus LIST   foci (um, splat -defocus): first:last:step or a list
+  -points LIST  only these (focus, dose) points, focus:dose,focus:dose,...
   -measure ARGS measure's arguments for every point, without -o and file,
                 e.g. "-rel 10,90 -hole 0 0"; cd is at the first height
   -target CD    with -tol: the process window for this CD (um)
@@ -57,7 +59,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
 dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet=""
-etchopts=""
+etchopts="" points=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help|-h) usage; exit 0 ;;
@@ -66,6 +68,7 @@ while [ $# -gt 0 ]; do
 	-et) need_val "$@"; etchtime=$2; shift 2 ;;
 	-dose) need_val "$@"; doses=$2; shift 2 ;;
 	-focus) need_val "$@"; foci=$2; shift 2 ;;
+	-points) need_val "$@"; points=$2; shift 2 ;;
 	-measure) need_val "$@"; margs=$2; shift 2 ;;
 	-target) need_val "$@"; target=$2; shift 2 ;;
 	-tol) need_val "$@"; tol=$2; shift 2 ;;
@@ -106,7 +109,7 @@ DRAWPLOT=$(findprog drawplot)
 
 # -collect: everything else is in DIR/Makefile
 if [ -n "$collect" ]; then
-	[ -z "$mask$resist$etchtime$doses$foci$margs$slurm$dryrun$keep$etchopts" ] ||
+	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts" ] ||
 		bad "-collect takes only -d, -target, -tol and -q: the sweep is in DIR/Makefile"
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
@@ -118,8 +121,8 @@ fi
 [ -n "$mask" ] || bad "-if (the splat input file) is required"
 [ -n "$resist" ] || bad "-bf (the bleach input file) is required"
 [ -n "$etchtime" ] || bad "-et (the development time) is required"
-[ -n "$doses" ] || bad "-dose is required"
-[ -n "$foci" ] || bad "-focus is required"
+[ -n "$doses$points" ] || bad "-dose is required"
+[ -n "$foci$points" ] || bad "-focus is required"
 [ -n "$margs" ] || bad "-measure is required (e.g. -measure \"-rel 10 -hole 0 0\")"
 posnum "$etchtime" || badv "-et $etchtime: expected a positive time (s)"
 case $chunk in ''|*[!0-9]*|0*) badv "-chunk $chunk: expected a whole number >= 1" ;; esac
@@ -160,6 +163,17 @@ E
 		done ;;
 	esac
 }
+# -points f:d,...: the foci and doses it names, and inpts F D to keep only its points
+if [ -n "$points" ]; then
+	[ -z "$doses$foci" ] || bad "-points replaces -dose and -focus"
+	pts=$(for p in $(echo "$points" | tr ',' ' '); do
+		[ "${p%%:*}" != "$p" ] && isnum "${p%%:*}" && isnum "${p#*:}" || badv "-points: $p is not focus:dose"
+		awk -v f="${p%%:*}" -v d="${p#*:}" 'BEGIN { printf "%.10g %.10g\n", f + 0, d + 0 }'
+	done) || exit 2
+	foci=$(printf '%s\n' "$pts" | cut -d' ' -f1 | sort -u -g | paste -sd, -)
+	doses=$(printf '%s\n' "$pts" | cut -d' ' -f2 | sort -u -g | paste -sd, -)
+fi
+inpts() { [ -z "$points" ] || printf '%s\n' "$pts" | grep -qxF -e "$1 $2"; }
 fvals=$(expand focus "$foci") || exit 2
 dvals=$(expand dose "$doses") || exit 2
 [ -n "$fvals" ] || badv "-focus $foci: no focus in that range"
@@ -170,6 +184,7 @@ printf '%s\n' "$dvals" | sort -c -u -g 2>/dev/null || badv "-dose $doses: give t
 nf=$(printf '%s\n' "$fvals" | wc -l)
 nd=$(printf '%s\n' "$dvals" | wc -l)
 npts=$((nf * nd))
+[ -z "$points" ] || npts=$(printf '%s\n' "$pts" | sort -u | wc -l)
 
 [ -r "$mask" ] || die "$mask: cannot read the splat input file"
 [ -r "$resist" ] || die "$resist: cannot read the bleach input file"
@@ -261,14 +276,14 @@ S
 	echo ".DELETE_ON_ERROR:"
 	echo ".PHONY: all images collect"
 	printf 'all:'
-	for f in $fvals; do for d in $dvals; do printf ' %s/%s/measure.dat' "$(fname "$f")" "$(dname "$d")"; done; done
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue; printf ' %s/%s/measure.dat' "$(fname "$f")" "$(dname "$d")"; done; done
 	echo
 	printf 'images:'
 	for f in $fvals; do printf ' %s/image.cont' "$(fname "$f")"; done
 	echo
 	# intermediates: not rebuilt when a point's measure.dat is up to date
 	printf '.SECONDARY:'
-	for f in $fvals; do for d in $dvals; do
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
 		printf ' %s/%s/rate %s/%s/curves.plot' "$(fname "$f")" "$(dname "$d")" "$(fname "$f")" "$(dname "$d")"
 	done; done
 	echo
@@ -278,7 +293,7 @@ S
 		echo "$F/image.cont: mask.in"
 		printf '\t@mkdir -p %s\n' "$F"
 		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q -defocus %s -o $@ mask.in\n' "$F" "$f" "$f"
-		for d in $dvals; do
+		for d in $dvals; do inpts "$f" "$d" || continue
 			P=$F/$(dname "$d")
 			echo "$P/rate: $F/image.cont resist.in"
 			printf '\t@mkdir -p %s\n' "$P"
@@ -294,7 +309,7 @@ S
 	echo "# the tables and plots, from whatever points have finished"
 	echo "collect:"
 	printf '\t@st=0; $(FEMWIN) -collect -o fem.dat -bossung bossung.2D -template bossung.tpl'
-	for f in $fvals; do for d in $dvals; do
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
 		printf ' \\\n\t  -p %s %s %s/%s/measure.dat' "$f" "$d" "$(fname "$f")" "$(dname "$d")"
 	done; done
 	printf ' || st=$$?; \\\n'
@@ -329,7 +344,7 @@ if [ -n "$slurm" ]; then
 		echo "cd $dir"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		k=0 t=0 line=""
-		for f in $fvals; do for d in $dvals; do
+		for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
 			line="$line $(fname "$f")/$(dname "$d")/measure.dat"
 			k=$((k + 1))
 			if [ $k -eq "$chunk" ]; then

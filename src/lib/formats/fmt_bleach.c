@@ -647,3 +647,82 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 		fprintf(f, "grid nz %d\n", in->nz);
 	aout_commit(a);
 }
+
+/* Numbered statements (calib).  A line is split at blanks and commas and
+ * ends at '#', as lex_line splits it; a token is a number when num_parse
+ * takes all of it.  The statement must be on one line only, since
+ * "the K-th number of layer" would otherwise not say which layer. */
+static int is_blank(char c)
+{
+	return c == ' ' || c == '\t' || c == '\r' || c == ',' || c == '\f' || c == '\v';
+}
+
+double fmt_bleach_number(const char *name, const char *text, const char *stmt, int k,
+			 size_t *off, size_t *len, long *line)
+{
+	long found = 0, lineno = 0;
+	double value = 0;
+	for (const char *s = text; *s; ) {
+		const char *eol = strchr(s, '\n');
+		if (!eol)
+			eol = s + strlen(s);
+		const char *hash = memchr(s, '#', (size_t)(eol - s));
+		const char *end = hash ? hash : eol;
+		lineno++;
+		int tok = 0, nnum = 0;
+		for (const char *t = s; t < end; ) {
+			while (t < end && is_blank(*t))
+				t++;
+			if (t == end)
+				break;
+			const char *te = t;
+			while (te < end && !is_blank(*te))
+				te++;
+			size_t tl = (size_t)(te - t);
+			if (tok == 0 && (tl != strlen(stmt) || strncasecmp(t, stmt, tl) != 0))
+				break;
+			if (tok == 0 && found)
+				die("%s:%ld: %s is also on line %ld: which one to change is not clear",
+				    name, lineno, stmt, found);
+			if (tok == 0)
+				found = lineno;
+			char buf[64];
+			double v;
+			if (tok > 0 && tl < sizeof buf) {
+				memcpy(buf, t, tl);
+				buf[tl] = '\0';
+				if (num_parse(buf, &v) && ++nnum == k) {
+					value = v;
+					*off = (size_t)(t - text);
+					*len = tl;
+				}
+			}
+			tok++;
+			t = te;
+		}
+		if (found == lineno && nnum < k)
+			die("%s:%ld: %s has %d number%s, not %d", name, lineno, stmt, nnum,
+			    nnum == 1 ? "" : "s", k);
+		s = *eol ? eol + 1 : eol;
+	}
+	if (!found)
+		die("%s: no %s statement", name, stmt);
+	*line = found;
+	return value;
+}
+
+char *fmt_bleach_set_number(const char *name, const char *text, const char *stmt, int k,
+			    double v)
+{
+	size_t off, len;
+	long line;
+	fmt_bleach_number(name, text, stmt, k, &off, &len, &line);
+	char num[NUM_BUFSZ];
+	num_fmt(num, v);
+	size_t n = strlen(text), nl = strlen(num);
+	char *out = xmalloc(n - len + nl + 1);
+	memcpy(out, text, off);
+	memcpy(out + off, num, nl);
+	memcpy(out + off + nl, text + off + len, n - off - len + 1);
+	return out;
+}

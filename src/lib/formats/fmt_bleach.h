@@ -21,6 +21,8 @@
 #ifndef S3D_FMT_BLEACH_H
 #define S3D_FMT_BLEACH_H
 
+#include <stddef.h>
+
 /* Boltzmann constant in eV/K (Arrhenius rates of car and peb). */
 #define BLEACH_KB_EV 8.617333262e-5
 
@@ -97,5 +99,19 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in);
 /* The default nz when no grid statement gives it: at least 40 points per
  * standing-wave period lambda / (2 n), and at least 50. */
 int fmt_bleach_default_nz(const struct bleach_input *in);
+
+/* The numbered statements, for calib(1): the K-th number (from 1) on the
+ * line whose first word is stmt, numbers counted as they appear on the
+ * line and words skipped ("develop mack 0.1 0.0001 0.5 8": K = 3 is 0.5).
+ * text is the whole file; name is used in messages.  Dies "name:line:
+ * what" when no line or more than one starts with stmt, or the line has
+ * fewer than k numbers.  Returns the value; *off and *len give where its
+ * characters are in text, *line its line. */
+double fmt_bleach_number(const char *name, const char *text, const char *stmt, int k,
+			 size_t *off, size_t *len, long *line);
+/* A copy of text (malloc'd) with that number replaced by v in num_fmt's
+ * shortest form, every other byte kept. */
+char *fmt_bleach_set_number(const char *name, const char *text, const char *stmt, int k,
+			    double v);
 
 #endif

@@ -126,6 +126,50 @@ void fmt_fem_free(struct fem_table *t)
 	free(t);
 }
 
+static int point_qcmp(const void *a, const void *b)
+{
+	return point_cmp(a, b);
+}
+
+struct fem_table *fmt_fem_read_cds(const char *path)
+{
+	/* rows in any order: sorted, then a repeated point is a neighbour */
+	struct fmt_lines l;
+	fmt_lines_open(&l, path);
+	struct fem_table *t = xcalloc(1, sizeof *t);
+	size_t cap = 0;
+	while (fmt_lines_next(&l)) {
+		if (l.ntok == 0 || l.tok[0][0] == '#')
+			continue;
+		if (l.ntok < 3)
+			die("%s:%ld: expected focus dose cd, found %d field%s", path, l.line,
+			    l.ntok, l.ntok == 1 ? "" : "s");
+		if (t->n == FEM_MAX_POINTS)
+			die("%s:%ld: more than %d points", path, l.line, FEM_MAX_POINTS);
+		struct fem_point p = {0, 0, 0, NAN, 1, NAN};
+		p.focus = fmt_lines_num(&l, 0, "focus");
+		p.dose = fmt_lines_num(&l, 1, "dose");
+		p.cd = fmt_lines_num(&l, 2, "cd");
+		if (!(p.dose > 0))
+			die("%s:%ld: dose must be positive", path, l.line);
+		if (!(p.cd > 0))
+			die("%s:%ld: cd must be positive (a measured CD, um)", path, l.line);
+		xgrow(&t->p, &cap, (size_t)t->n + 1, sizeof *t->p);
+		t->p[t->n++] = p;
+	}
+	if (t->n == 0)
+		die("%s:%ld: no measured point (rows focus dose cd)", path, l.line > 0 ? l.line : 1);
+	qsort(t->p, (size_t)t->n, sizeof *t->p, point_qcmp);
+	for (int i = 1; i < t->n; i++)
+		if (point_cmp(&t->p[i - 1], &t->p[i]) == 0) {
+			char f[NUM_BUFSZ], d[NUM_BUFSZ];
+			die("%s: the point focus %s dose %s is given twice", path,
+			    num_fmt(f, t->p[i].focus), num_fmt(d, t->p[i].dose));
+		}
+	fmt_lines_close(&l);
+	return t;
+}
+
 void fmt_fem_window_write(const char *path, const struct fem_window_row *r, int n)
 {
 	struct aout *a = aout_open(path);

@@ -44,6 +44,12 @@ struct fem_table *fmt_fem_read(const char *path);
 void fmt_fem_write(const char *path, const struct fem_table *t);
 void fmt_fem_free(struct fem_table *t);
 
+/* Measured CDs (calib(1) -data, fem(5)): rows "focus dose cd", further
+ * fields ignored (so a fem.dat is one), '#' lines and blank lines
+ * skipped, any order, each (focus, dose) once, dose and cd positive.
+ * Only focus, dose and cd are set (cleared 1, swa and loss NAN). */
+struct fem_table *fmt_fem_read_cds(const char *path);
+
 /* One row of window.dat. */
 struct fem_window_row {
 	double el;      /* exposure latitude, % of the centre dose */

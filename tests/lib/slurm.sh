@@ -1,0 +1,91 @@
+# tests/lib/slurm.sh - a private single-node Slurm cluster for a test, set
+# up as tests/fem/010-slurm.sh sets up its own: munged with a key
+# generated in the test's directory, slurmctld and slurmd with a
+# slurm.conf written there, addresses 127.0.0.1, ports picked free, run as
+# root, stopped by a trap on exit.  Source it after common.sh and call
+# slurm_start: it skips the test without Slurm or root, fails when the
+# cluster does not come up in 30 s, and exports SLURM_CONF.
+slurm_port() { # slurm_port N: a free TCP port, from the test's pid
+	_p=$(( 20000 + ($$ * 7 + $1 * 131) % 20000 ))
+	while ss -ltn 2>/dev/null | grep -q ":$_p "; do _p=$((_p + 1)); done
+	echo $_p
+}
+slurm_stop() {
+	for _p in $slurm_pids; do kill "$_p" 2>/dev/null; done
+	sleep 0.5
+	for _p in $slurm_pids; do kill -9 "$_p" 2>/dev/null; done
+	return 0
+}
+slurm_start() {
+	for _t in sbatch squeue scontrol sinfo slurmctld slurmd munged; do
+		command -v $_t >/dev/null 2>&1 || [ -x /usr/sbin/$_t ] ||
+			skip "Slurm is not installed (no $_t; apt-get install slurm-wlm munge)"
+	done
+	[ "$(id -u)" -eq 0 ] || skip "a private Slurm cluster needs root (slurmd runs jobs as their user)"
+	PATH=$PATH:/usr/sbin
+	_D=$PWD
+	_ctl=$(slurm_port 1)
+	_dp=$(slurm_port 2)
+	[ "$_dp" != "$_ctl" ] || _dp=$((_ctl + 1))
+	mkdir -p munge state spool log
+	dd if=/dev/urandom of=munge/munge.key bs=1024 count=1 2>/dev/null
+	chmod 700 munge
+	chmod 400 munge/munge.key
+	slurm_pids=""
+	trap slurm_stop EXIT INT TERM
+	munged --foreground --force --key-file="$_D/munge/munge.key" --socket="$_D/munge/socket" \
+		--pid-file="$_D/munge/pid" --log-file="$_D/munge/log" --seed-file="$_D/munge/seed" \
+		>munge/out 2>&1 &
+	slurm_pids="$slurm_pids $!"
+	_host=$(hostname -s)
+	cat >slurm.conf <<C
+ClusterName=testcluster
+SlurmctldHost=$_host(127.0.0.1)
+SlurmctldPort=$_ctl
+SlurmdPort=$_dp
+AuthType=auth/munge
+AuthInfo=socket=$_D/munge/socket
+CredType=cred/munge
+SlurmUser=root
+SlurmdUser=root
+StateSaveLocation=$_D/state
+SlurmdSpoolDir=$_D/spool
+SlurmctldPidFile=$_D/slurmctld.pid
+SlurmdPidFile=$_D/slurmd.pid
+SlurmctldLogFile=$_D/log/slurmctld.log
+SlurmdLogFile=$_D/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+SchedulerType=sched/builtin
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+MpiDefault=none
+ReturnToService=2
+SlurmctldTimeout=30
+SlurmdTimeout=30
+InactiveLimit=0
+KillWait=5
+MinJobAge=300
+NodeName=$_host NodeAddr=127.0.0.1 CPUs=2 State=UNKNOWN
+PartitionName=test Nodes=$_host Default=YES MaxTime=INFINITE State=UP
+C
+	SLURM_CONF=$_D/slurm.conf
+	export SLURM_CONF
+	_i=0
+	while [ ! -S munge/socket ]; do
+		_i=$((_i + 1)); [ $_i -lt 100 ] || fail "munged did not start: $(cat munge/log 2>/dev/null)"
+		sleep 0.1
+	done
+	slurmctld -D -i -f "$_D/slurm.conf" >log/slurmctld.out 2>&1 &
+	slurm_pids="$slurm_pids $!"
+	slurmd -D -f "$_D/slurm.conf" -N "$_host" >log/slurmd.out 2>&1 &
+	slurm_pids="$slurm_pids $!"
+	_i=0
+	until sinfo -h -o '%T' 2>/dev/null | grep -q '^idle'; do
+		_i=$((_i + 1))
+		[ $_i -lt 300 ] || fail "the cluster did not come up in 30 s: $(tail -n 5 log/slurmctld.log log/slurmd.log 2>&1)"
+		sleep 0.1
+	done
+}
