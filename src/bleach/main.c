@@ -301,6 +301,8 @@ int main(int argc, char **argv)
 		in.dose = dose_override;
 	if (st->is_stack)
 		stack_check(st, &in, o.contour, o.input);
+	if (st->film)
+		stack_film_divide(st, &in, o.contour, o.input);
 
 	int nx = in.nx ? in.nx : c->nx, ny = in.nx ? in.ny : c->ny, nz = in.nz;
 	double npts = (double)nx * ny * nz, ncold = (double)nx * ny;

@@ -83,22 +83,7 @@ void vector_film_read(struct vfilm *vf, struct splat_input *in, const char *inpu
 	vf->have = 1;
 	vf->layers = xreallocarray(NULL, (size_t)(b.nlayers ? b.nlayers : 1),
 				   sizeof *vf->layers);
-	for (int l = 0; l < b.nlayers; l++) {
-		vf->layers[l].thick = b.layers[l].thick;
-		vf->layers[l].n = b.layers[l].n;
-		vf->layers[l].k = b.layers[l].k;
-	}
-	struct filmstack *fs = &vf->fs;
-	fs->lambda = b.wavelength;
-	fs->n0 = b.ambient;
-	fs->nr = b.index;
-	/* the unexposed resist: alpha = A + B, k = alpha lambda / (4 pi) */
-	fs->kr = (b.A + b.B) * b.wavelength / (4 * M_PI);
-	fs->thick = b.thick;
-	fs->nlayers = b.nlayers;
-	fs->layers = vf->layers;
-	fs->sub_n = b.sub_n;
-	fs->sub_k = b.sub_k;
+	fmt_bleach_film(&b, &vf->fs, vf->layers);
 }
 
 void vector_film_free(struct vfilm *vf)

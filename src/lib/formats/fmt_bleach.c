@@ -10,6 +10,7 @@
  * silently ignored line in a process description is a wrong simulation.
  */
 #include "fmt_bleach.h"
+#include "filmstack.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
@@ -646,4 +647,24 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 	else
 		fprintf(f, "grid nz %d\n", in->nz);
 	aout_commit(a);
+}
+
+void fmt_bleach_film(const struct bleach_input *in, struct filmstack *fs,
+		     struct film_layer *layers)
+{
+	for (int l = 0; l < in->nlayers; l++) {
+		layers[l].thick = in->layers[l].thick;
+		layers[l].n = in->layers[l].n;
+		layers[l].k = in->layers[l].k;
+	}
+	fs->lambda = in->wavelength;
+	fs->n0 = in->ambient;
+	fs->nr = in->index;
+	/* the unexposed resist (M = 1): alpha = A + B, k = alpha lambda / (4 pi) */
+	fs->kr = (in->A + in->B) * in->wavelength / (4 * M_PI);
+	fs->thick = in->thick;
+	fs->nlayers = in->nlayers;
+	fs->layers = layers;
+	fs->sub_n = in->sub_n;
+	fs->sub_k = in->sub_k;
 }
