@@ -37,8 +37,8 @@
  * crosses a cell weighted by the part a inside it, the self terms' loss
  * |V|^2 (a - a^2) summed apart into the zero frequency.  Per source
  * point and plane each component of each input polarisation is one
- * inverse FFT: three for a single polarisation, six unpolarised, against
- * abbe.c's one.  Threads share the columns and rows of the transforms;
+ * inverse FFT: three for a single polarisation, five unpolarised (vfill),
+ * against abbe.c's one.  Threads share the columns and rows of the transforms;
  * every grid value is summed in the same order whatever their count.
  */
 #include "checked.h"
@@ -167,6 +167,29 @@ static double radiometric(const struct splat_input *in, double beta)
 	return sqrt(sqrt(1 - so * so) / sqrt(1 - si * si));
 }
 
+/* The FFT grid of the fields.  One source point's orders lie within
+ * R + reach of -s in the pupil (R = NA / lambda, reach the cell's half
+ * diagonal), so counted from the order nearest to -s they span |m| <= mx
+ * = floor((R + reach) Lx + 1/2), and their intensity |dm| <= 2 mx: a grid
+ * of 4 mx + 1 holds it unaliased (a plane wave common to all orders does
+ * not change |E|^2), where the orders of every source point together
+ * need 4 M + 1, M = (R + s_max) Lx: for sigma 0.5 two thirds of the side.
+ * Where mx would not be below M the orders stay where they are. */
+struct vgrid {
+	int mx, ny;
+	size_t kx, ky;
+};
+
+static void vgrid_init(struct vgrid *vg, const struct orders *o, double R, double reach)
+{
+	/* the 1e-9 keeps a bound that is an integer in exact arithmetic */
+	double bx = floor((R + reach) * o->lx + 0.5 + 1e-9), by = floor((R + reach) * o->ly + 0.5 + 1e-9);
+	vg->mx = bx < o->mmax ? (int)bx : o->mmax;
+	vg->ny = by < o->nmax ? (int)by : o->nmax;
+	vg->kx = nice_length(4 * (size_t)vg->mx + 1);
+	vg->ky = nice_length(4 * (size_t)vg->ny + 1);
+}
+
 struct vjob {
 	size_t kx, ky;
 	const struct fft_plan *px, *py;
@@ -223,37 +246,75 @@ struct vorder {
 	double c2cov;           /* |c|^2 (cov - cov^2) rad^2: the self term's loss */
 };
 
-/* Fills the nf = 3 npol grids of plane l from the orders and their
- * responses r[(q * np + l) * 3 + {s, pt, pz}]; adds the self terms' loss
- * to *diag. */
-static void vfill(const struct vorder *vo, int no, const double complex *r, int np, int l,
-		  int npol, const double *wt, double complex *e, size_t grid, double w,
-		  double *diag)
+/* The fields of one plane: for a single input polarisation e its x, y
+ * and z components (3 grids, weights 1); unpolarised (npol 2, x and y
+ * averaged) the same in 5 grids instead of 6: with alpha = (r_s + r_pt)
+ * / 2, beta = (r_pt - r_s) / 2 and 2 phi the angle of u doubled, the x-y
+ * part of the order's 3 x 2 Jones-to-field matrix is alpha 1 + beta
+ * [cos 2phi, sin 2phi; sin 2phi, -cos 2phi], whose Frobenius norm summed
+ * over the orders is 2 (|A|^2 + |B_c|^2 + |B_s|^2), A = sum c alpha,
+ * B_c = sum c beta cos 2phi, B_s = sum c beta sin 2phi; the z row adds
+ * |sum c r_pz u_x|^2 + |sum c r_pz u_y|^2.  Halved for the average: A,
+ * B_c, B_s weigh 1 and the z fields 1/2 (vfield_weights).  The self
+ * terms' loss goes to *diag. */
+static int vfill(const struct vorder *vo, int no, const double complex *r, int np, int l,
+		 int npol, const double *wt, double complex *e, size_t grid, double w,
+		 double *diag)
 {
-	memset(e, 0, (size_t)(3 * npol) * grid * sizeof *e);
+	int nf = npol == 2 ? 5 : 3;
+	memset(e, 0, (size_t)nf * grid * sizeof *e);
 	for (int q = 0; q < no; q++) {
 		const struct vorder *o = &vo[q];
 		const double complex *rq = r + ((size_t)q * np + l) * 3;
 		double complex rs = rq[0], rpt = rq[1], rpz = rq[2];
+		double complex *g = e + o->cell;
 		double d = 0;
+		if (npol == 2) {
+			double c2 = o->ux * o->ux - o->uy * o->uy, s2 = 2 * o->ux * o->uy;
+			double complex al = o->base * (rs + rpt) / 2, be = o->base * (rpt - rs) / 2;
+			double complex z = o->base * rpz;
+			g[0] = al;
+			g[grid] = be * c2;
+			g[2 * grid] = be * s2;
+			g[3 * grid] = z * o->ux;
+			g[4 * grid] = z * o->uy;
+		}
 		for (int j = 0; j < npol; j++) {
 			double complex s = o->as[j] * rs, p = o->ap[j] * rpt, z = o->ap[j] * rpz;
-			double complex *g = e + (size_t)(3 * j) * grid + o->cell;
-			g[0] = o->base * (s * o->sx + p * o->ux);
-			g[grid] = o->base * (s * o->sy + p * o->uy);
-			g[2 * grid] = o->base * z;
+			if (npol == 1) {
+				g[0] = o->base * (s * o->sx + p * o->ux);
+				g[grid] = o->base * (s * o->sy + p * o->uy);
+				g[2 * grid] = o->base * z;
+			}
 			d += wt[j] * (creal(s * conj(s)) + creal(p * conj(p)) + creal(z * conj(z)));
 		}
 		*diag += w * o->c2cov * d;
 	}
+	return nf;
+}
+
+/* The weights of vfill's fields' |E|^2 for a source point of weight w. */
+static int vfield_weights(int npol, double w, double *wf)
+{
+	if (npol == 2) {
+		wf[0] = wf[1] = wf[2] = w;
+		wf[3] = wf[4] = w / 2;
+		return 5;
+	}
+	wf[0] = wf[1] = wf[2] = w;
+	return 3;
 }
 
 /* The orders of source point (sx, sy) that pass the pupil, with their
  * responses at every plane; returns their count. */
 static int vorders(struct vctx *c, const struct orders *o, double sx, double sy, double h,
 		   double rin2, double rout2, int coherent, int npol, const double *ex,
-		   const double *ey, size_t kx, size_t ky, struct vorder *vo, double complex *r)
+		   const double *ey, const struct vgrid *vg, struct vorder *vo, double complex *r)
 {
+	size_t kx = vg->kx, ky = vg->ky;
+	/* the grid's origin: the order nearest to -s (vgrid) */
+	long m0 = vg->mx < o->mmax ? lround(-sx * o->lx) : 0;
+	long n0 = vg->ny < o->nmax ? lround(-sy * o->ly) : 0;
 	const struct pupil *p = c->p;
 	int np = c->np, no = 0;
 	for (int q = 0; q < o->n; q++) {
@@ -280,8 +341,12 @@ static int vorders(struct vctx *c, const struct orders *o, double sx, double sy,
 			v->base *= cos(ph) + I * sin(ph);
 		double c2 = creal(o->c[q]) * creal(o->c[q]) + cimag(o->c[q]) * cimag(o->c[q]);
 		v->c2cov = c2 * (cov - cov * cov) * rad * rad;
-		size_t i = (size_t)(o->m[q] < 0 ? o->m[q] + (long)kx : o->m[q]);
-		size_t j = (size_t)(o->k[q] < 0 ? o->k[q] + (long)ky : o->k[q]);
+		long mm = o->m[q] - m0, nn = o->k[q] - n0;
+		if (labs(mm) > vg->mx || labs(nn) > vg->ny)
+			die("vector.c: order (%d, %d) beyond the grid of source point (%g, %g)",
+			    o->m[q], o->k[q], sx, sy);
+		size_t i = (size_t)(mm < 0 ? mm + (long)kx : mm);
+		size_t j = (size_t)(nn < 0 ? nn + (long)ky : nn);
 		v->cell = j * kx + i;
 		respond(c, beta, r + (size_t)no * np * 3);
 		no++;
@@ -291,11 +356,11 @@ static int vorders(struct vctx *c, const struct orders *o, double sx, double sy,
 
 /* The image spectrum of every plane from the sums acc (np grids) and the
  * self terms' loss diag, scaled by factor / norm (abbe.c's assembly). */
-static struct spectrum *vassemble(const struct orders *o, int np, size_t kx, size_t ky,
+static struct spectrum *vassemble(const struct orders *o, int np, const struct vgrid *vg,
 				  double *acc, const double *diag, double factor, double norm,
 				  double complex *e, double complex *work)
 {
-	size_t grid = kx * ky;
+	size_t kx = vg->kx, ky = vg->ky, grid = kx * ky;
 	size_t wd = 4 * (size_t)o->mmax + 1, ht = 4 * (size_t)o->nmax + 1;
 	struct fft_plan *fx = fft_plan_new(kx, -1), *fy = fft_plan_new(ky, -1);
 	struct spectrum *sp = spectrum_new(o, np);
@@ -307,9 +372,9 @@ static struct spectrum *vassemble(const struct orders *o, int np, size_t kx, siz
 		e[0] += diag[l] * (double)grid;
 		double complex *out = sp->a + (size_t)l * wd * ht;
 		double scale = factor / ((double)grid * norm);
-		for (long dn = -2 * (long)o->nmax; dn <= 2 * (long)o->nmax; dn++) {
+		for (long dn = -2 * (long)vg->ny; dn <= 2 * (long)vg->ny; dn++) {
 			size_t j = (size_t)(dn < 0 ? dn + (long)ky : dn);
-			for (long dm = -2 * (long)o->mmax; dm <= 2 * (long)o->mmax; dm++) {
+			for (long dm = -2 * (long)vg->mx; dm <= 2 * (long)vg->mx; dm++) {
 				size_t i = (size_t)(dm < 0 ? dm + (long)kx : dm);
 				out[(size_t)(dn + 2 * o->nmax) * wd + (size_t)(dm + 2 * o->mmax)] =
 					e[j * kx + i] * scale;
@@ -361,10 +426,12 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	for (int l = 0; l < np; l++)
 		c.depth[l] = l == np - 1 && np > 1 ? in->resist_thick
 			   : np > 1 ? l * in->resist_thick / (np - 1) : 0;
-	size_t kx = nice_length(4 * (size_t)o->mmax + 1), ky = nice_length(4 * (size_t)o->nmax + 1);
+	struct vgrid vg;
+	vgrid_init(&vg, o, R, reach);
+	size_t kx = vg.kx, ky = vg.ky;
 	size_t grid = ck_mul(kx, ky, "vector FFT grid");
 	struct fft_plan *px = fft_plan_new(kx, 1), *py = fft_plan_new(ky, 1);
-	double complex *e = xreallocarray(NULL, ck_mul(grid, 6, "vector FFT grids"), sizeof *e);
+	double complex *e = xreallocarray(NULL, ck_mul(grid, 5, "vector FFT grids"), sizeof *e);
 	double *acc = xcalloc(ck_mul(grid, (size_t)np, "vector FFT grid planes"), sizeof *acc);
 	double *diag = xcalloc((size_t)np, sizeof *diag);
 	int nt = par_threads();
@@ -372,15 +439,15 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	double complex **work = xreallocarray(NULL, (size_t)nt, sizeof *work);
 	for (int t = 0; t < nt; t++)
 		work[t] = xreallocarray(NULL, nw, sizeof **work);
-	size_t *cols = xreallocarray(NULL, 2 * (size_t)o->mmax + 1, sizeof *cols);
+	size_t *cols = xreallocarray(NULL, 2 * (size_t)vg.mx + 1, sizeof *cols);
 	size_t ncols = 0;
-	for (int m = -o->mmax; m <= o->mmax; m++)
+	for (int m = -vg.mx; m <= vg.mx; m++)
 		cols[ncols++] = (size_t)(m < 0 ? m + (long)kx : m);
 	struct vorder *vo = xreallocarray(NULL, (size_t)(o->n ? o->n : 1), sizeof *vo);
 	double complex *r = xreallocarray(NULL, ck_mul((size_t)(o->n ? o->n : 1),
 						       3 * (size_t)np, "vector responses"),
 					  sizeof *r);
-	double wf[6];
+	double wf[5];
 	struct vjob jb = {kx, ky, px, py, 0, e, wf, acc, work, cols};
 
 	struct progress prog;
@@ -390,12 +457,10 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 		double ex[2], ey[2], wt[2];
 		int npol = jones(in->polarization, sx[k], sy[k], R, ex, ey, wt);
 		int no = vorders(&c, o, sx[k], sy[k], h, rin2, rout2, s->coherent, npol, ex, ey,
-				 kx, ky, vo, r);
+				 &vg, vo, r);
 		if (!no)
 			continue;
-		jb.nf = 3 * npol;
-		for (int f = 0; f < jb.nf; f++)
-			wf[f] = sw[k] * wt[f / 3];
+		jb.nf = vfield_weights(npol, sw[k], wf);
 		for (int l = 0; l < np; l++) {
 			vfill(vo, no, r, np, l, npol, wt, e, grid, sw[k], &diag[l]);
 			jb.acc = acc + (size_t)l * grid;
@@ -405,7 +470,7 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	}
 	/* Re n_resist / N_imm: the intensity in the resist of a unit field */
 	double factor = vf && vf->have ? vf->fs.nr / in->immersion : 1;
-	struct spectrum *sp = vassemble(o, np, kx, ky, acc, diag, factor, norm, e, work[0]);
+	struct spectrum *sp = vassemble(o, np, &vg, acc, diag, factor, norm, e, work[0]);
 	sp->pairs = nn;
 	for (int t = 0; t < nt; t++)
 		free(work[t]);
@@ -446,9 +511,9 @@ void splat_estimate_vector(const struct splat_input *in, double *nodes, double *
 			   double *bytes)
 {
 	splat_estimate_abbe(in, nodes, seconds, bytes);
-	/* three field components per input polarisation, two unpolarised,
-	 * each an FFT where abbe.c has one; the film's response per order */
-	double nf = in->polarization == SPLAT_POL_UNPOLARIZED ? 6 : 3;
+	/* three fields for one polarisation, five unpolarised, each an FFT
+	 * where abbe.c has one */
+	double nf = in->polarization == SPLAT_POL_UNPOLARIZED ? 5 : 3;
 	*seconds *= nf;
 	*bytes *= 2;
 }
