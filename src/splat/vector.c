@@ -55,6 +55,10 @@
 
 /* Input files written with a few decimals must still agree. */
 static const double VECTOR_MATCH = 1e-9;
+/* The direct pair sum is used for a source point whose orders' count
+ * squared is below this times the transforms' butterflies (measured on
+ * the cases of tests/bench/vector.sh). */
+static const double VECTOR_PAIR_FFT = 0.5;
 /* Planes a standing-wave period below which splat -bf warns: linear
  * interpolation of a sine sampled 4 times a period errs by up to 30 %
  * of its swing, 8 times by 8 %. */
@@ -256,10 +260,12 @@ struct vorder {
 	double as[2], ap[2];    /* a_s, a_p per input polarisation */
 	double sx, sy, ux, uy;  /* s_hat and u */
 	double c2cov;           /* |c|^2 (cov - cov^2) rad^2: the self term's loss */
+	int m, n;               /* the order's indices */
 };
 
-/* The fields of one plane: for a single input polarisation e its x, y
- * and z components (3 grids, weights 1); unpolarised (npol 2, x and y
+/* The fields' amplitudes of one plane, amp[q nf + f] for order q and
+ * field f: for a single input polarisation e its x, y and z components
+ * (nf = 3, weights 1); unpolarised (npol 2, x and y
  * averaged) the same in 5 grids instead of 6: with alpha = (r_s + r_pt)
  * / 2, beta = (r_pt - r_s) / 2 and 2 phi the angle of u doubled, the x-y
  * part of the order's 3 x 2 Jones-to-field matrix is alpha 1 + beta
@@ -269,34 +275,32 @@ struct vorder {
  * |sum c r_pz u_x|^2 + |sum c r_pz u_y|^2.  Halved for the average: A,
  * B_c, B_s weigh 1 and the z fields 1/2 (vfield_weights).  The self
  * terms' loss goes to *diag. */
-static int vfill(const struct vorder *vo, int no, const double complex *r, int np, int l,
-		 int npol, const double *wt, double complex *e, size_t grid, double w,
-		 double *diag)
+static int vamp(const struct vorder *vo, int no, const double complex *r, int np, int l,
+		int npol, const double *wt, double w, double complex *amp, double *diag)
 {
 	int nf = npol == 2 ? 5 : 3;
-	memset(e, 0, (size_t)nf * grid * sizeof *e);
 	for (int q = 0; q < no; q++) {
 		const struct vorder *o = &vo[q];
 		const double complex *rq = r + ((size_t)q * np + l) * 3;
 		double complex rs = rq[0], rpt = rq[1], rpz = rq[2];
-		double complex *g = e + o->cell;
+		double complex *g = amp + (size_t)q * nf;
 		double d = 0;
 		if (npol == 2) {
 			double c2 = o->ux * o->ux - o->uy * o->uy, s2 = 2 * o->ux * o->uy;
 			double complex al = o->base * (rs + rpt) / 2, be = o->base * (rpt - rs) / 2;
 			double complex z = o->base * rpz;
 			g[0] = al;
-			g[grid] = be * c2;
-			g[2 * grid] = be * s2;
-			g[3 * grid] = z * o->ux;
-			g[4 * grid] = z * o->uy;
+			g[1] = be * c2;
+			g[2] = be * s2;
+			g[3] = z * o->ux;
+			g[4] = z * o->uy;
 		}
 		for (int j = 0; j < npol; j++) {
 			double complex s = o->as[j] * rs, p = o->ap[j] * rpt, z = o->ap[j] * rpz;
 			if (npol == 1) {
 				g[0] = o->base * (s * o->sx + p * o->ux);
-				g[grid] = o->base * (s * o->sy + p * o->uy);
-				g[2 * grid] = o->base * z;
+				g[1] = o->base * (s * o->sy + p * o->uy);
+				g[2] = o->base * z;
 			}
 			d += wt[j] * (creal(s * conj(s)) + creal(p * conj(p)) + creal(z * conj(z)));
 		}
@@ -305,7 +309,44 @@ static int vfill(const struct vorder *vo, int no, const double complex *r, int n
 	return nf;
 }
 
-/* The weights of vfill's fields' |E|^2 for a source point of weight w. */
+/* The amplitudes onto the nf grids of the FFT path. */
+static void vscatter(const struct vorder *vo, int no, int nf, const double complex *amp,
+		     double complex *e, size_t grid)
+{
+	memset(e, 0, (size_t)nf * grid * sizeof *e);
+	for (int q = 0; q < no; q++)
+		for (int f = 0; f < nf; f++)
+			e[(size_t)f * grid + vo[q].cell] = amp[(size_t)q * nf + f];
+}
+
+/* The direct path, for a source point with few orders: its intensity's
+ * spectrum sum_f w_f sum_{q, q'} a_qf a*_q'f at dm = m - m', dn = n - n'
+ * added to the plane's sacc ((4 ny + 1) rows of 4 mx + 1). */
+static void vpairs(const struct vorder *vo, int no, int nf, const double complex *amp,
+		   const double *wf, double complex *sacc, int mx, int ny)
+{
+	size_t wd = 4 * (size_t)mx + 1;
+	size_t mid = (size_t)(2 * ny) * wd + (size_t)(2 * mx);
+	for (int q = 0; q < no; q++) {
+		const double complex *a = amp + (size_t)q * nf;
+		double d = 0;
+		for (int f = 0; f < nf; f++)
+			d += wf[f] * (creal(a[f]) * creal(a[f]) + cimag(a[f]) * cimag(a[f]));
+		sacc[mid] += d;
+		/* the pair (p, q) is the conjugate of (q, p), at -dm, -dn */
+		for (int p = 0; p < q; p++) {
+			const double complex *b = amp + (size_t)p * nf;
+			double complex t = 0;
+			for (int f = 0; f < nf; f++)
+				t += wf[f] * a[f] * conj(b[f]);
+			long k = (long)(vo[q].n - vo[p].n) * (long)wd + (vo[q].m - vo[p].m);
+			sacc[(size_t)((long)mid + k)] += t;
+			sacc[(size_t)((long)mid - k)] += conj(t);
+		}
+	}
+}
+
+/* The weights of vamp's fields' |E|^2 for a source point of weight w. */
 static int vfield_weights(int npol, double w, double *wf)
 {
 	if (npol == 2) {
@@ -337,7 +378,7 @@ static int vorders(struct vctx *c, const struct orders *o, double sx, double sy,
 		if (cov == 0)
 			continue;
 		struct vorder *v = &vo[no];
-		double g = hypot(gx, gy), beta = p->lambda * g;
+		double g = sqrt(gx * gx + gy * gy), beta = p->lambda * g;
 		v->ux = g > 0 ? gx / g : 1;
 		v->uy = g > 0 ? gy / g : 0;
 		v->sx = -v->uy;
@@ -360,6 +401,8 @@ static int vorders(struct vctx *c, const struct orders *o, double sx, double sy,
 		size_t i = (size_t)(mm < 0 ? mm + (long)kx : mm);
 		size_t j = (size_t)(nn < 0 ? nn + (long)ky : nn);
 		v->cell = j * kx + i;
+		v->m = o->m[q];
+		v->n = o->k[q];
 		respond(c, beta, r + (size_t)no * np * 3);
 		no++;
 	}
@@ -369,9 +412,11 @@ static int vorders(struct vctx *c, const struct orders *o, double sx, double sy,
 /* The image spectrum of every plane from the sums acc (np grids) and the
  * self terms' loss diag, scaled by factor / norm (abbe.c's assembly). */
 static struct spectrum *vassemble(const struct orders *o, int np, const struct vgrid *vg,
-				  double *acc, const double *diag, double factor, double norm,
-				  double complex *e, double complex *work)
+				  double *acc, const double complex *sacc, const double *diag,
+				  double factor, double norm, double complex *e,
+				  double complex *work)
 {
+	size_t swd = 4 * (size_t)vg->mx + 1, sgrid = swd * (4 * (size_t)vg->ny + 1);
 	size_t kx = vg->kx, ky = vg->ky, grid = kx * ky;
 	size_t wd = 4 * (size_t)o->mmax + 1, ht = 4 * (size_t)o->nmax + 1;
 	struct fft_plan *fx = fft_plan_new(kx, -1), *fy = fft_plan_new(ky, -1);
@@ -388,8 +433,12 @@ static struct spectrum *vassemble(const struct orders *o, int np, const struct v
 			size_t j = (size_t)(dn < 0 ? dn + (long)ky : dn);
 			for (long dm = -2 * (long)vg->mx; dm <= 2 * (long)vg->mx; dm++) {
 				size_t i = (size_t)(dm < 0 ? dm + (long)kx : dm);
+				/* the transforms' sum and the direct pairs' */
+				double complex d = sacc[(size_t)l * sgrid +
+							(size_t)(dn + 2 * vg->ny) * swd +
+							(size_t)(dm + 2 * vg->mx)];
 				out[(size_t)(dn + 2 * o->nmax) * wd + (size_t)(dm + 2 * o->mmax)] =
-					e[j * kx + i] * scale;
+					(e[j * kx + i] + d * (double)grid) * scale;
 			}
 		}
 	}
@@ -459,6 +508,14 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	double complex *r = xreallocarray(NULL, ck_mul((size_t)(o->n ? o->n : 1),
 						       3 * (size_t)np, "vector responses"),
 					  sizeof *r);
+	double complex *amp = xreallocarray(NULL, ck_mul((size_t)(o->n ? o->n : 1), 5,
+							 "vector amplitudes"), sizeof *amp);
+	size_t sgrid = (4 * (size_t)vg.mx + 1) * (4 * (size_t)vg.ny + 1);
+	double complex *sacc = xcalloc(ck_mul(sgrid, (size_t)np, "vector spectra"), sizeof *sacc);
+	/* the transforms' work a field, in pair products (about equal costs
+	 * a butterfly and a product, measured: tests/bench/vector.sh) */
+	double fft_cost = VECTOR_PAIR_FFT * ((double)ncols * ky * log2((double)ky) +
+					     (double)ky * kx * (log2((double)kx) + 1));
 	double wf[5];
 	struct vjob jb = {kx, ky, px, py, 0, e, wf, acc, work, cols};
 
@@ -473,8 +530,15 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 		if (!no)
 			continue;
 		jb.nf = vfield_weights(npol, sw[k], wf);
+		/* few orders: their pairs directly, cheaper than the transforms */
+		int direct = (double)no * no < fft_cost;
 		for (int l = 0; l < np; l++) {
-			vfill(vo, no, r, np, l, npol, wt, e, grid, sw[k], &diag[l]);
+			vamp(vo, no, r, np, l, npol, wt, sw[k], amp, &diag[l]);
+			if (direct) {
+				vpairs(vo, no, jb.nf, amp, wf, sacc + (size_t)l * sgrid, vg.mx, vg.ny);
+				continue;
+			}
+			vscatter(vo, no, jb.nf, amp, e, grid);
 			jb.acc = acc + (size_t)l * grid;
 			par_for(ncols, 8, vcolumns, &jb);
 			par_for(ky, 8, vrows, &jb);
@@ -482,7 +546,7 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	}
 	/* Re n_resist / N_imm: the intensity in the resist of a unit field */
 	double factor = vf && vf->have ? vf->fs.nr / in->immersion : 1;
-	struct spectrum *sp = vassemble(o, np, &vg, acc, diag, factor, norm, e, work[0]);
+	struct spectrum *sp = vassemble(o, np, &vg, acc, sacc, diag, factor, norm, e, work[0]);
 	sp->pairs = nn;
 	for (int t = 0; t < nt; t++)
 		free(work[t]);
@@ -490,6 +554,8 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	free(cols);
 	free(vo);
 	free(r);
+	free(amp);
+	free(sacc);
 	free(e);
 	free(acc);
 	free(diag);
