@@ -189,6 +189,10 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
  * source disc, 0 the default). */
 struct spectrum *splat_spectrum_vector(const struct splat_input *in, const struct vfilm *vf,
 				       int ncells, int *norders);
+/* A source point whose orders' count squared is below this times the
+ * FFT path's butterflies sums its pairs directly (vector.c; 0: never,
+ * INFINITY: always, for the tests). */
+extern double vector_pair_fft;
 /* splat_estimate_abbe for vector imaging. */
 void splat_estimate_vector(const struct splat_input *in, double *nodes, double *seconds,
 			   double *bytes);

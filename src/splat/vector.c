@@ -57,8 +57,9 @@
 static const double VECTOR_MATCH = 1e-9;
 /* The direct pair sum is used for a source point whose orders' count
  * squared is below this times the transforms' butterflies (measured on
- * the cases of tests/bench/vector.sh). */
-static const double VECTOR_PAIR_FFT = 0.5;
+ * the cases of tests/bench/vector.sh); the tests set it to 0 and to
+ * infinity to compare the two paths. */
+double vector_pair_fft = 0.5;
 /* Planes a standing-wave period below which splat -bf warns: linear
  * interpolation of a sine sampled 4 times a period errs by up to 30 %
  * of its swing, 8 times by 8 %. */
@@ -514,7 +515,7 @@ struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
 	double complex *sacc = xcalloc(ck_mul(sgrid, (size_t)np, "vector spectra"), sizeof *sacc);
 	/* the transforms' work a field, in pair products (about equal costs
 	 * a butterfly and a product, measured: tests/bench/vector.sh) */
-	double fft_cost = VECTOR_PAIR_FFT * ((double)ncols * ky * log2((double)ky) +
+	double fft_cost = vector_pair_fft * ((double)ncols * ky * log2((double)ky) +
 					     (double)ky * kx * (log2((double)kx) + 1));
 	double wf[5];
 	struct vjob jb = {kx, ky, px, py, 0, e, wf, acc, work, cols};
