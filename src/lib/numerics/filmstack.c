@@ -30,6 +30,16 @@
  * cannot overflow before the check). */
 #define FILM_RESCALE 1e100
 
+/* n - ik (CMPLX is C11 but not in every compiler's headers, clang's
+ * fuzzing build among them; the array layout of a complex is). */
+static double complex film_index(double n, double k)
+{
+	double complex z;
+	((double *)&z)[0] = n;
+	((double *)&z)[1] = -k;
+	return z;
+}
+
 static double complex film_q(double complex N, double beta)
 {
 	double complex q = csqrt(N * N - beta * beta);
@@ -90,7 +100,7 @@ static void film_below(const struct filmstack *fs, enum film_pol pol, double bet
 		       double complex *E, double complex *H, double *lscale)
 {
 	double k0 = 2 * M_PI / fs->lambda;
-	double complex Ns = CMPLX(fs->sub_n, -fs->sub_k), qs = film_q(Ns, beta);
+	double complex Ns = film_index(fs->sub_n, fs->sub_k), qs = film_q(Ns, beta);
 	if (qs == 0)
 		qs = 1e-300;    /* grazing in a lossless substrate: no flux passes */
 	*E = 1;
@@ -98,7 +108,7 @@ static void film_below(const struct filmstack *fs, enum film_pol pol, double bet
 	*lscale = 0;
 	for (int l = fs->nlayers - 1; l >= 0; l--) {
 		const struct film_layer *ly = &fs->layers[l];
-		double complex N = CMPLX(ly->n, -ly->k);
+		double complex N = film_index(ly->n, ly->k);
 		struct film_step st = film_matrix(N, film_q(N, beta), k0 * ly->thick, pol);
 		film_apply(&st, E, H);
 		*lscale += log(film_rescale(E, H));
@@ -112,7 +122,7 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 	double complex E, H;
 	double lscale;
 	film_below(fs, pol, beta, &E, &H, &lscale);
-	double complex Nr = CMPLX(fs->nr, -fs->kr), qr = film_q(Nr, beta);
+	double complex Nr = film_index(fs->nr, fs->kr), qr = film_q(Nr, beta);
 	int want_h = pol == FILM_P && ez;
 	/* climb the resist from its bottom through the depths, upwards; equal
 	 * steps (a stack's planes) share one matrix */
@@ -165,9 +175,9 @@ void filmstack_rt(const struct filmstack *fs, enum film_pol pol, double beta, do
 	double complex E, H;
 	double lscale;
 	film_below(fs, pol, beta, &E, &H, &lscale);
-	double complex Ns = CMPLX(fs->sub_n, -fs->sub_k), qs = film_q(Ns, beta);
+	double complex Ns = film_index(fs->sub_n, fs->sub_k), qs = film_q(Ns, beta);
 	double complex etas = qs == 0 ? 0 : film_eta(Ns, qs, pol);
-	double complex Nr = CMPLX(fs->nr, -fs->kr);
+	double complex Nr = film_index(fs->nr, fs->kr);
 	struct film_step st = film_matrix(Nr, film_q(Nr, beta), k0 * fs->thick, pol);
 	film_apply(&st, &E, &H);
 	lscale += log(film_rescale(&E, &H));
