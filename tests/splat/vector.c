@@ -19,7 +19,8 @@
  *      tests/bleach/thinfilm.c's closed form) to 1e-12;
  *   3. filmstack_field at oblique incidence, s and p, tangential and z
  *      components, equals the same Airy sum with tilted admittances (q for
- *      s, N^2 / q for p) and E_z = tan(theta) (E_up - E_down), to 1e-10;
+ *      s, N^2 / q for p) and E_z = tan(theta) (E_up - E_down), to 1e-10,
+ *      also through a film thick and absorbing enough to need rescaling;
  *   4. R + T = 1 in lossless stacks for every angle, s and p, a layer
  *      beyond its critical angle included (frustrated total reflection),
  *      to 1e-12; and R + T < 1 once the resist absorbs;
@@ -239,6 +240,26 @@ static void closed_forms(void)
 	}
 	printf("oblique s and p, tangential and z: filmstack against the Airy sum %.3g\n", worst);
 	CHECK(worst <= TOL_AIRY, "oblique incidence: %g from the Airy sum", worst);
+	/* a film so thick and absorbing (k0 k T = 860: e^860 overflows) that
+	 * the climb must rescale: the field at its top and through it, 1e-10 */
+	struct filmstack thick = {lambda, n0, 1.7, 1.0, 50, 0, NULL, 6.41, 2.62};
+	double complex Nt = CMPLX(1.7, -1.0);
+	double zt[5] = {0, 0.01, 0.1, 1, 50};
+	worst = 0;
+	for (int pol = 0; pol < 2; pol++) {
+		double beta = 0.5, q0 = sqrt(1 - beta * beta);
+		double complex q1 = qof(Nt, beta), q2 = qof(N2, beta);
+		double complex e0 = pol ? 1 / q0 : q0, e1 = pol ? Nt * Nt / q1 : q1;
+		double complex e2 = pol ? N2 * N2 / q2 : q2, et[5];
+		filmstack_field(&thick, pol ? FILM_P : FILM_S, beta, 5, zt, et, NULL);
+		for (int j = 0; j < 5; j++) {
+			double complex dn, up;
+			airy(e0, e1, e2, k0 * q1, 50, zt[j], &dn, &up);
+			worst = fmax(worst, cabs(et[j] - (pol ? q0 : 1) * (dn + up)));
+		}
+	}
+	printf("a 50 um absorbing film (rescaled climb) against the Airy sum %.3g\n", worst);
+	CHECK(worst <= TOL_AIRY, "thick absorbing film: %g from the Airy sum", worst);
 }
 
 static void energy(void)

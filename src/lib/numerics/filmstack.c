@@ -131,6 +131,10 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 	 * steps (a stack's planes) share one matrix */
 	double cur = fs->thick, dlast = -1;
 	struct film_step st = {0, 0, 0};
+	/* the field grows at most as exp(k0 |Im q| d) through the resist
+	 * (from |E| + |H| <= 1e100, film_below): only a film thicker than
+	 * e^200 of it can approach overflow and needs the test every step */
+	int guard = k0 * fabs(cimag(qr)) * fs->thick > 200;
 	for (int j = nz; j >= 0; j--) {
 		double to = j > 0 ? z[j - 1] : 0;
 		double d = cur - to;
@@ -142,7 +146,7 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 				dlast = d;
 			}
 			film_apply(&st, &E, &H);
-			double m = film_rescale(&E, &H);
+			double m = guard ? film_rescale(&E, &H) : 1;
 			if (m != 1)
 				for (int q = j; q < nz; q++) {
 					et[q] /= m;
@@ -161,10 +165,10 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 	double complex eta0 = pol == FILM_S ? q0 : n0 * n0 / q0;
 	double complex Ei = (E + H / eta0) / 2;
 	/* per unit incident amplitude: E_i is cos(theta_0) of it for p */
-	double complex f = (pol == FILM_S ? 1 : q0 / n0) / Ei;
+	double complex f = (pol == FILM_S ? 1 : q0 / n0) / Ei, fz = -beta * f / (Nr * Nr);
 	for (int j = 0; j < nz; j++) {
 		if (want_h)
-			ez[j] = -beta * ez[j] / (Nr * Nr) * f;
+			ez[j] *= fz;
 		else if (ez)
 			ez[j] = 0;
 		et[j] *= f;
