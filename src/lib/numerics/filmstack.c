@@ -97,6 +97,16 @@ static double film_rescale(double complex *E, double complex *H)
 	return 1;
 }
 
+/* Pieces a step of k0 d in a layer of q is cut into, so that no piece
+ * grows or shrinks the field by more than e^FILM_PIECE (cos and sin of a
+ * complex phase overflow near e^709). */
+#define FILM_PIECE 50.0
+static int film_pieces(double k0d, double complex q)
+{
+	double g = k0d * fabs(cimag(q));
+	return g > FILM_PIECE ? (int)ceil(g / FILM_PIECE) : 1;
+}
+
 /* (E, H) at the resist's bottom, the log of the factors divided out in
  * *lscale. */
 static void film_below(const struct filmstack *fs, enum film_pol pol, double beta,
@@ -111,10 +121,13 @@ static void film_below(const struct filmstack *fs, enum film_pol pol, double bet
 	*lscale = 0;
 	for (int l = fs->nlayers - 1; l >= 0; l--) {
 		const struct film_layer *ly = &fs->layers[l];
-		double complex N = film_index(ly->n, ly->k);
-		struct film_step st = film_matrix(N, film_q(N, beta), k0 * ly->thick, pol);
-		film_apply(&st, E, H);
-		*lscale += log(film_rescale(E, H));
+		double complex N = film_index(ly->n, ly->k), q = film_q(N, beta);
+		int ns = film_pieces(k0 * ly->thick, q);
+		struct film_step st = film_matrix(N, q, k0 * ly->thick / ns, pol);
+		for (int i = 0; i < ns; i++) {
+			film_apply(&st, E, H);
+			*lscale += log(film_rescale(E, H));
+		}
 	}
 }
 
@@ -131,6 +144,7 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 	 * steps (a stack's planes) share one matrix */
 	double cur = fs->thick, dlast = -1;
 	struct film_step st = {0, 0, 0};
+	int ns = 1;
 	/* the field grows at most as exp(k0 |Im q| d) through the resist
 	 * (from |E| + |H| <= 1e100, film_below): only a film thicker than
 	 * e^200 of it can approach overflow and needs the test every step */
@@ -142,17 +156,20 @@ void filmstack_field(const struct filmstack *fs, enum film_pol pol, double beta,
 			/* the planes k T / (N - 1) differ in their steps by
 			 * rounding alone: one matrix, a phase error of 1e-12 */
 			if (!(fabs(d - dlast) <= 1e-12 * d)) {
-				st = film_matrix(Nr, qr, k0 * d, pol);
+				ns = film_pieces(k0 * d, qr);
+				st = film_matrix(Nr, qr, k0 * d / ns, pol);
 				dlast = d;
 			}
-			film_apply(&st, &E, &H);
-			double m = guard ? film_rescale(&E, &H) : 1;
-			if (m != 1)
-				for (int q = j; q < nz; q++) {
-					et[q] /= m;
-					if (want_h)
-						ez[q] /= m;
-				}
+			for (int i = 0; i < ns; i++) {
+				film_apply(&st, &E, &H);
+				double m = guard ? film_rescale(&E, &H) : 1;
+				if (m != 1)
+					for (int q = j; q < nz; q++) {
+						et[q] /= m;
+						if (want_h)
+							ez[q] /= m;
+					}
+			}
 		}
 		cur = to;
 		if (j > 0) {
@@ -184,10 +201,13 @@ void filmstack_rt(const struct filmstack *fs, enum film_pol pol, double beta, do
 	film_below(fs, pol, beta, &E, &H, &lscale);
 	double complex Ns = film_index(fs->sub_n, fs->sub_k), qs = film_q(Ns, beta);
 	double complex etas = qs == 0 ? 0 : film_eta(Ns, qs, pol);
-	double complex Nr = film_index(fs->nr, fs->kr);
-	struct film_step st = film_matrix(Nr, film_q(Nr, beta), k0 * fs->thick, pol);
-	film_apply(&st, &E, &H);
-	lscale += log(film_rescale(&E, &H));
+	double complex Nr = film_index(fs->nr, fs->kr), qr = film_q(Nr, beta);
+	int ns = film_pieces(k0 * fs->thick, qr);
+	struct film_step st = film_matrix(Nr, qr, k0 * fs->thick / ns, pol);
+	for (int i = 0; i < ns; i++) {
+		film_apply(&st, &E, &H);
+		lscale += log(film_rescale(&E, &H));
+	}
 	double n0 = fs->n0, q0 = sqrt(n0 * n0 - beta * beta);
 	double eta0 = pol == FILM_S ? q0 : n0 * n0 / q0;
 	double complex Ei = (E + H / eta0) / 2, Er = (E - H / eta0) / 2;
