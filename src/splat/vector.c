@@ -24,22 +24,25 @@
  *    is exp(+i w t), splat's phases the opposite (a deeper plane gains
  *    +k_z z, pupil.c), so the film's response is conjugated before it
  *    multiplies the pupil: with N_imm = n_resist and no reflections this
- *    is today's stack.
+ *    is the scalar stack's propagation (pupil_depth).
  * 6. I = (Re n_resist / N_imm) |E|^2 / |E_inc|^2, |E|^2 over x, y and z,
  *    E_inc the amplitude a clear mask gives at normal incidence (1 here),
  *    so a clear mask at normal incidence gives bleach's 1D thin-film
  *    intensity.  Without a film (no splat -bf) the resist is taken as
- *    index-matched and lossless, the plane waves keep their amplitudes
- *    and only bend into it (Snell), and the clear field is 1 as in
- *    today's stack: bleach applies its own thin-film factor then.
+ *    lossless and without reflections: the plane waves keep their s and
+ *    p amplitudes and only bend into it (Snell), and the clear field is
+ *    1 as in the scalar stack: bleach applies its own thin-film factor.
  *
  * The source sum is abbe.c's: cells of side h, an order whose pupil edge
  * crosses a cell weighted by the part a inside it, the self terms' loss
  * |V|^2 (a - a^2) summed apart into the zero frequency.  Per source
- * point and plane each component of each input polarisation is one
- * inverse FFT: three for a single polarisation, five unpolarised (vfill),
- * against abbe.c's one.  Threads share the columns and rows of the transforms;
- * every grid value is summed in the same order whatever their count.
+ * point and plane each field is one inverse FFT: three for a single
+ * polarisation, five unpolarised (vamp), against abbe.c's one, on a grid
+ * that spans one source point's orders (vgrid); a source point with few
+ * orders adds their pairs to the spectrum directly instead (vpairs).
+ * Threads share the columns and rows of the transforms; every grid value
+ * is summed in the same order whatever their count, and the direct pairs
+ * on one thread in source-point order.
  */
 #include "checked.h"
 #include "fft.h"
