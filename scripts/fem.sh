@@ -290,9 +290,9 @@ S
 	for f in $fvals; do
 		F=$(fname "$f")
 		echo
-		echo "$F/image.cont: mask.in"
+		echo "$F/image.cont: mask.in resist.in"
 		printf '\t@mkdir -p %s\n' "$F"
-		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q -defocus %s -o $@ mask.in\n' "$F" "$f" "$f"
+		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
 		for d in $dvals; do inpts "$f" "$d" || continue
 			P=$F/$(dname "$d")
 			echo "$P/rate: $F/image.cont resist.in"

@@ -125,7 +125,8 @@ if [ -n "$splat_in" ]; then
 	[ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
 	contour=$(splat -name "$splat_in") || exit 1
 	say "splat $splat_in -> $contour"
-	splat $quiet "$splat_in" || die "splat failed; stopping"
+	# -bf: an imaging vector input images through the resist file's film
+	splat $quiet ${bleach_in:+-bf "$bleach_in"} "$splat_in" || die "splat failed; stopping"
 fi
 
 if [ -n "$bleach_in" ]; then

@@ -112,6 +112,12 @@ struct image_stack;
  * the resist file's. */
 void stack_check(const struct image_stack *st, const struct bleach_input *in,
 		 const char *stack_name, const char *input_name);
+/* film.c: a stack through the film (its header word film) divided, plane
+ * by plane, by the unexposed film's normal-incidence factor, so that
+ * stack_expose applies it as a plain stack; dies if in turns the
+ * standing waves off. */
+void stack_film_divide(struct image_stack *st, const struct bleach_input *in,
+		       const char *stack_name, const char *input_name);
 /* M of every node of the rate array, M[(nz - 1 - j) * ncol + q] for node
  * j (depth j dz) of column q: the column's intensity at that depth is the
  * linear interpolation in depth of the planes' intensities

@@ -224,6 +224,8 @@ static void read_inputs(struct run *u)
 		in->dose = o->dose;
 	if (st->is_stack)
 		stack_check(st, in, o->contour, o->input);
+	if (st->film)
+		stack_film_divide(st, in, o->contour, o->input);
 
 	int nx = u->nx = in->nx ? in->nx : c->nx, ny = u->ny = in->nx ? in->ny : c->ny;
 	int nz = u->nz = in->nz;

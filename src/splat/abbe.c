@@ -60,7 +60,7 @@
 #include <string.h>
 
 /* The smallest length >= n whose prime factors are 2, 3 and 5. */
-static size_t nice_length(size_t n)
+size_t nice_length(size_t n)
 {
 	for (size_t k = n < 1 ? 1 : n;; k++) {
 		size_t m = k;
@@ -166,7 +166,7 @@ int abbe_nodes(const struct source *s, double h, double *sx, double *sy, double 
 }
 
 /* The part of the cell at g (side h) inside the pupil |g| < R. */
-static double pupil_cover(double gx, double gy, double R, double rin2, double rout2, double h,
+double pupil_cover(double gx, double gy, double R, double rin2, double rout2, double h,
 			  int point)
 {
 	double g2 = gx * gx + gy * gy;

@@ -24,7 +24,7 @@
 
 static const char usage[] =
 	"usage: splat [-o contour-file] [-q] [-big] [-name] [-defocus d]\n"
-	"             [-method hopkins|abbe|auto] [-threads n] input-file\n"
+	"             [-method hopkins|abbe|auto] [-bf resist-file] [-threads n] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
 	"  -q               quiet: no progress lines on stderr\n"
@@ -34,6 +34,9 @@ static const char usage[] =
 	"  -method m        hopkins (pairs of orders, exact source integral), abbe\n"
 	"                   (source points and FFTs, for large windows) or auto\n"
 	"                   (default: the one estimated cheaper)\n"
+	"  -bf resist-file  with imaging vector: the film stack (ambient, resist,\n"
+	"                   layers, substrate) of bleach's input file, which the\n"
+	"                   image stack then passes through\n"
 	"  -threads n       threads to use (default $SAMPLE3D_THREADS, else every core)\n"
 	"  -name            print the name of the contour-file it would write, and\n"
 	"                   exit (for scripts such as sample3D)\n";
@@ -44,6 +47,7 @@ struct options {
 	int name_only;
 	const char *defocus;    /* -defocus value, checked after parsing */
 	const char *method;     /* -method value */
+	const char *bf;         /* -bf resist file */
 	long threads;
 	const char *input;
 };
@@ -76,6 +80,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_str(&a, "-defocus", &o->defocus))
 			;
 		else if (args_str(&a, "-method", &o->method))
+			;
+		else if (args_str(&a, "-bf", &o->bf))
 			;
 		else if (args_int(&a, "-threads", 1, PAR_MAX_THREADS, &o->threads))
 			;
@@ -156,6 +162,8 @@ int main(int argc, char **argv)
 	struct splat_input *in = fmt_splat_read(o.input);
 	if (o.defocus)
 		in->defocus = defocus;
+	struct vfilm vf;
+	vector_film_read(&vf, in, o.input, o.bf);
 	const struct splat_mask *m = &in->mask;
 	const char *out = o.output ? o.output : in->contour;
 	if (o.name_only) {
@@ -179,9 +187,15 @@ int main(int argc, char **argv)
 
 	double est_n, est_pairs, est_s, est_b, abbe_nodes, abbe_s, abbe_b;
 	splat_estimate(in, &est_n, &est_pairs, &est_s, &est_b);
-	splat_estimate_abbe(in, &abbe_nodes, &abbe_s, &abbe_b);
+	(in->vector ? splat_estimate_vector : splat_estimate_abbe)(in, &abbe_nodes, &abbe_s,
+								      &abbe_b);
 	enum splat_method method = SPLAT_AUTO;
-	if (o.method && !strcmp(o.method, "hopkins"))
+	if (in->vector && o.method && !strcmp(o.method, "hopkins"))
+		die_status(EXIT_USAGE, "-method hopkins: %s asks for imaging vector, which is "
+			   "summed over source points (abbe)", o.input);
+	if (in->vector)
+		method = SPLAT_ABBE;
+	else if (o.method && !strcmp(o.method, "hopkins"))
 		method = SPLAT_HOPKINS;
 	else if (o.method && !strcmp(o.method, "abbe"))
 		method = SPLAT_ABBE;
@@ -208,7 +222,8 @@ int main(int argc, char **argv)
 	splat_quiet = o.quiet;
 
 	int norders;
-	struct spectrum *sp = splat_spectrum_method(in, method, 0, 0, &norders);
+	struct spectrum *sp = in->vector ? splat_spectrum_vector(in, &vf, 0, &norders)
+				 : splat_spectrum_method(in, method, 0, 0, &norders);
 	if (!sp)
 		die("%s: the source lies outside the pupil: no light reaches the wafer",
 		    o.input);
@@ -226,6 +241,7 @@ int main(int argc, char **argv)
 		struct image_stack *st = fmt_stack_new(in->planes, in->resist_thick,
 						       in->resist_index, c);
 		st->wavelength = in->wavelength;        /* bleach checks it */
+		st->film = vf.have;
 		for (int k = 0; k < st->n; k++) {
 			struct spectrum v = spectrum_plane(sp, k);
 			grid(&v, method, m, in->nx, in->ny, st->plane[k]->z);
@@ -250,6 +266,7 @@ int main(int argc, char **argv)
 	aout_finish();
 	fmt_contour_free(c);
 	spectrum_free(sp);
+	vector_film_free(&vf);
 	fmt_splat_free(in);
 	return 0;
 }

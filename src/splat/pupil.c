@@ -2,7 +2,8 @@
  * pupil.c - the projection-lens pupil P(g) = exp(i Phi(g)) for
  * |g| <= NA/lambda (thesis 9.3.3, projection lens aberrations), with
  *   Phi = 2 pi (W + W_defocus),
- *   W_defocus = (d/lambda) (sqrt(1 - lambda^2 |g|^2) - 1)  waves (exact form),
+ *   W_defocus = (d/lambda) (sqrt(n0^2 - lambda^2 |g|^2) - n0)  waves (exact form,
+ *               n0 the immersion index, 1 in air),
  * and W the sum of the Seidel terms, written with rho the pupil vector
  * normalised to 1 at NA and h the field vector (so that rho^3 h
  * cos(theta - theta_h) = rho^2 (rho . h), and no angle is needed):
@@ -36,7 +37,9 @@ void pupil_init(struct pupil *p, const struct splat_input *in)
 	p->defocus = in->defocus;
 	p->naberr = in->naberr;
 	p->aberr = in->aberr;
-	double waves = fabs(in->defocus / in->wavelength) * (1 - sqrt(1 - in->na * in->na));
+	double n0 = in->immersion;
+	p->immersion = n0;
+	double waves = fabs(in->defocus / in->wavelength) * (n0 - sqrt(n0 * n0 - in->na * in->na));
 	int flat = in->defocus == 0;
 	for (int i = 0; i < in->naberr; i++) {
 		/* every term is at most |w| on the unit pupil for |h| <= 1;
@@ -53,7 +56,7 @@ void pupil_init(struct pupil *p, const struct splat_input *in)
 		p->dz = in->resist_thick / (in->planes - 1);
 		p->index = in->resist_index;
 		double n = in->resist_index;
-		waves += in->resist_thick / in->wavelength * (n - sqrt(n * n - in->na * in->na));
+		waves += in->resist_thick / in->wavelength * (n - sqrt(fmax(n * n - in->na * in->na, 0)));
 	}
 	p->flat = flat;
 	p->waves = waves;
@@ -109,8 +112,10 @@ double pupil_phase(const struct pupil *p, double gx, double gy)
 	double g2 = gx * gx + gy * gy;
 	double w = 0;
 	if (p->defocus != 0) {
-		double q = 1 - p->lambda * p->lambda * g2;
-		w += p->defocus / p->lambda * (sqrt(q > 0 ? q : 0) - 1);
+		/* in the immersion medium of index n0 (1: air) */
+		double n0 = p->immersion;
+		double q = n0 * n0 - p->lambda * p->lambda * g2;
+		w += p->defocus / p->lambda * (sqrt(q > 0 ? q : 0) - n0);
 	}
 	double rx = gx / p->cutoff, ry = gy / p->cutoff;
 	double r2 = rx * rx + ry * ry;

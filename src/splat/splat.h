@@ -19,6 +19,7 @@
 #ifndef SPLAT_SPLAT_H
 #define SPLAT_SPLAT_H
 
+#include "filmstack.h"
 #include "fmt_splat.h"
 
 #include <complex.h>
@@ -46,6 +47,7 @@ struct pupil {
 	double lambda, na;
 	double cutoff;          /* NA/lambda, 1/um */
 	double defocus;         /* micrometres */
+	double immersion;       /* index n0 of the medium the defocus is in (1: air) */
 	int naberr;
 	const struct splat_aberr *aberr;
 	int flat;               /* 1 if Phi == 0 everywhere (no defocus, no aberration) */
@@ -157,6 +159,44 @@ double abbe_cover(double d, double ux, double uy, double h);
 int abbe_nodes(const struct source *s, double h, double *sx, double *sy, double *w);
 struct spectrum *abbe_spectrum(const struct orders *o, const struct pupil *p,
 			       const struct source *s, double h);
+
+/* abbe.c's FFT length (the smallest >= n with factors 2, 3, 5) and the
+ * part of the source cell at g (side h) inside the pupil |g| < R (point:
+ * a coherent source's single point), shared by vector.c. */
+size_t nice_length(size_t n);
+double pupil_cover(double gx, double gy, double R, double rin2, double rout2, double h,
+		   int point);
+
+/* Vector imaging (vector.c, splat(5)'s imaging vector): the film stack of
+ * splat -bf, or none (have 0). */
+struct vfilm {
+	int have;
+	struct filmstack fs;
+	struct film_layer *layers;      /* owned */
+};
+/* With imaging vector and a resist file bf (NULL: none): the film stack
+ * from it, its thickness and index put into in's resist statement; dies
+ * naming the file when it does not fit the mask file (input). */
+void vector_film_read(struct vfilm *vf, struct splat_input *in, const char *input,
+		      const char *bf);
+void vector_film_free(struct vfilm *vf);
+/* The vector Abbe sum over the source cells of side h (1/um): the image
+ * spectrum of every plane, normalised as vector.c's top says; NULL if no
+ * light passes. */
+struct spectrum *vector_spectrum(const struct orders *o, const struct pupil *p,
+				 const struct source *s, double h, const struct splat_input *in,
+				 const struct vfilm *vf);
+/* The whole computation for an input (ncells: cells across the smallest
+ * source disc, 0 the default). */
+struct spectrum *splat_spectrum_vector(const struct splat_input *in, const struct vfilm *vf,
+				       int ncells, int *norders);
+/* A source point whose orders' count squared is below this times the
+ * FFT path's butterflies sums its pairs directly (vector.c; 0: never,
+ * INFINITY: always, for the tests). */
+extern double vector_pair_fft;
+/* splat_estimate_abbe for vector imaging. */
+void splat_estimate_vector(const struct splat_input *in, double *nodes, double *seconds,
+			   double *bytes);
 
 /* The imaging method: -method hopkins|abbe|auto (auto: the cheaper by
  * splat_estimate). */

@@ -9,6 +9,7 @@
 #include "fmt_splat.h"
 #include "util.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +41,8 @@ static void roundtrip(const char *path)
 	      a->ncutlines == b->ncutlines && a->nx == b->nx && a->ny == b->ny &&
 	      a->wavelength == b->wavelength && a->na == b->na && a->sigma == b->sigma &&
 	      a->source == b->source && a->defocus == b->defocus &&
+	      a->vector == b->vector && a->immersion == b->immersion &&
+	      a->polarization == b->polarization && a->reduction == b->reduction &&
 	      strcmp(a->contour, b->contour) == 0, "%s: values changed", path);
 	for (int i = 0; i < a->mask.nrects && i < b->mask.nrects; i++)
 		CHECK(memcmp(&a->mask.rects[i].x1, &b->mask.rects[i].x1, 6 * sizeof(double)) == 0,
@@ -75,6 +78,23 @@ int main(void)
 	      "cutline -1 0 1 0 5 c1.2D\ncutline 0 -2 0 2 7 c2.2D\n", f);
 	fshut(f, "all.in");
 	roundtrip("all.in");
+	/* the vector statements, and reduction inf */
+	f = fopen("vec.in", "w");
+	if (!f)
+		die("vec.in:");
+	fputs("imaging vector\nimmersion 1.44\nna 1.35\npolarization tm\nreduction inf\n"
+	      "window 0 1 0 1\n", f);
+	fshut(f, "vec.in");
+	roundtrip("vec.in");
+	{
+		char path[4096];
+		snprintf(path, sizeof path, "%s/examples/arf-immersion-lines/mask-te.in", top);
+		roundtrip(path);
+		struct splat_input *v = fmt_splat_read("vec.in");
+		CHECK(v->vector && v->immersion == 1.44 && v->polarization == SPLAT_POL_TM &&
+		      isinf(v->reduction), "vector statements not read");
+		fmt_splat_free(v);
+	}
 	struct splat_input *in = fmt_splat_read("all.in");
 	CHECK(in->source == SPLAT_SRC_DIPOLE && in->dipole_y == 1, "last source wins");
 	CHECK(in->naberr == 6 && in->aberr[5].kind == SPLAT_AB_ZERNIKE && in->aberr[5].zernike == 9,

@@ -10,6 +10,7 @@
  * silently ignored line in a process description is a wrong simulation.
  */
 #include "fmt_bleach.h"
+#include "filmstack.h"
 #include "lex.h"
 #include "num.h"
 #include "util.h"
@@ -725,4 +726,24 @@ char *fmt_bleach_set_number(const char *name, const char *text, const char *stmt
 	memcpy(out + off, num, nl);
 	memcpy(out + off + nl, text + off + len, n - off - len + 1);
 	return out;
+}
+
+void fmt_bleach_film(const struct bleach_input *in, struct filmstack *fs,
+		     struct film_layer *layers)
+{
+	for (int l = 0; l < in->nlayers; l++) {
+		layers[l].thick = in->layers[l].thick;
+		layers[l].n = in->layers[l].n;
+		layers[l].k = in->layers[l].k;
+	}
+	fs->lambda = in->wavelength;
+	fs->n0 = in->ambient;
+	fs->nr = in->index;
+	/* the unexposed resist (M = 1): alpha = A + B, k = alpha lambda / (4 pi) */
+	fs->kr = (in->A + in->B) * in->wavelength / (4 * M_PI);
+	fs->thick = in->thick;
+	fs->nlayers = in->nlayers;
+	fs->layers = layers;
+	fs->sub_n = in->sub_n;
+	fs->sub_k = in->sub_k;
 }

@@ -23,6 +23,11 @@
 
 #include <stddef.h>
 
+/* filmstack.h's (not included here: it brings complex.h, whose macro I
+ * the programs use as a name) */
+struct filmstack;
+struct film_layer;
+
 /* Boltzmann constant in eV/K (Arrhenius rates of car and peb). */
 #define BLEACH_KB_EV 8.617333262e-5
 
@@ -96,6 +101,12 @@ void fmt_bleach_read(const char *path, struct bleach_input *in);
 void fmt_bleach_parse(const char *name, const char *text, struct bleach_input *in);
 /* Writes the statements back (round trip, documentation). */
 void fmt_bleach_write(const char *path, const struct bleach_input *in);
+/* The film stack of the file for filmstack.h (layers: BLEACH_MAX_LAYERS
+ * entries, or at least in->nlayers), with the unexposed resist's
+ * extinction k = (A + B) lambda / (4 pi): what splat -bf images through
+ * and what bleach divides such an image stack by. */
+void fmt_bleach_film(const struct bleach_input *in, struct filmstack *fs,
+		     struct film_layer *layers);
 /* The default nz when no grid statement gives it: at least 40 points per
  * standing-wave period lambda / (2 n), and at least 50. */
 int fmt_bleach_default_nz(const struct bleach_input *in);

@@ -344,6 +344,65 @@ static void finish_layers(struct lex *lx, struct splat_input *in)
 	}
 }
 
+/* ---- vector imaging: imaging, immersion, polarization, reduction ---- */
+
+/* The immersion index's bound: beyond any liquid or solid immersion. */
+static const double SPLAT_MAX_IMMERSION = 10;
+
+/* The vector-imaging statements; returns 0 if kw is none of them. */
+static int vector_statement(struct lex *lx, struct splat_input *in, char **tok, int n)
+{
+	const char *kw = tok[0];
+	if (strcasecmp(kw, "imaging") == 0) {
+		if (n != 2 || (strcasecmp(tok[1], "vector") && strcasecmp(tok[1], "scalar")))
+			lex_error(lx, "imaging: expected \"imaging vector\" or \"imaging scalar\"");
+		in->vector = strcasecmp(tok[1], "vector") == 0;
+	} else if (strcasecmp(kw, "immersion") == 0) {
+		want(lx, kw, n, 1, 1, "immersion N");
+		in->immersion = number(lx, kw, "a refractive index", tok[1]);
+		if (!(in->immersion >= 1 && in->immersion <= SPLAT_MAX_IMMERSION))
+			lex_error(lx, "immersion: the index must be in [1, %g], found %g",
+				  SPLAT_MAX_IMMERSION, in->immersion);
+	} else if (strcasecmp(kw, "polarization") == 0) {
+		static const char *names[] = {"unpolarized", "x", "y", "te", "tm"};
+		int k = 0;
+		while (n == 2 && k < 5 && strcasecmp(tok[1], names[k]))
+			k++;
+		if (n != 2 || k == 5)
+			lex_error(lx, "polarization: expected x, y, te, tm or unpolarized");
+		in->polarization = (enum splat_pol)k;
+	} else if (strcasecmp(kw, "reduction") == 0) {
+		want(lx, kw, n, 1, 1, "reduction R|inf");
+		if (strcasecmp(tok[1], "inf") == 0) {
+			in->reduction = INFINITY;
+		} else {
+			in->reduction = number(lx, kw, "a reduction ratio or inf", tok[1]);
+			if (!(in->reduction >= 1 && in->reduction <= 1e6))
+				lex_error(lx, "reduction: expected a ratio from 1 to 1e6 or inf, "
+					  "found %g", in->reduction);
+		}
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
+/* na below the immersion index (na may reach it with an immersion
+ * statement), and the object-side sine na / R below 1. */
+static void check_na(struct lex *lx, const struct splat_input *in)
+{
+	long line = in->na_line ? in->na_line : 1L;
+	if (!(in->na < in->immersion)) {
+		if (in->immersion == 1)
+			die("%s:%ld: na must be in (0, 1), found %g", lex_name(lx), line, in->na);
+		die("%s:%ld: na %g must be below the immersion index %g", lex_name(lx), line,
+		    in->na, in->immersion);
+	}
+	if (!(in->na < in->reduction))
+		die("%s:%ld: na %g on the wafer is na / R = %g on the mask, not below 1: "
+		    "reduction R must exceed na", lex_name(lx), line, in->na, in->na / in->reduction);
+}
+
 /* What the reader keeps between statements: the capacities of the
  * growing arrays and the lines whole-file checks name. */
 struct reader {
@@ -369,8 +428,10 @@ static int optics_statement(struct reader *rd, const char *kw, char **tok, int n
 	} else if (strcasecmp(kw, "na") == 0) {
 		want(lx, kw, n, 1, 1, "na value");
 		in->na = number(lx, kw, "a numerical aperture", tok[1]);
-		if (!(in->na > 0 && in->na < 1))
+		/* below the immersion index: checked at the end (check_na) */
+		if (!(in->na > 0 && in->na < SPLAT_MAX_IMMERSION))
 			lex_error(lx, "na must be in (0, 1), found %g", in->na);
+		in->na_line = lex_lineno(lx);
 	} else if (strcasecmp(kw, "sigma") == 0) {
 		want(lx, kw, n, 1, 1, "sigma value");
 		double s = number(lx, kw, "a partial coherence", tok[1]);
@@ -580,6 +641,8 @@ struct splat_input *fmt_splat_read(const char *path)
 	in->mask.bg_t = 0;
 	in->mask.bg_phase = 0;
 	in->margin = -1;
+	in->immersion = 1;
+	in->reduction = 4;
 
 	char **tok;
 	const int *quoted;
@@ -589,7 +652,7 @@ struct splat_input *fmt_splat_read(const char *path)
 		if (quoted[0])
 			lex_error(lx, "unknown statement \"%.40s\"", kw);
 		if (!optics_statement(&r, kw, tok, n) && !mask_statement(&r, kw, tok, n) &&
-		    !output_statement(&r, kw, tok, n))
+		    !output_statement(&r, kw, tok, n) && !vector_statement(lx, in, tok, n))
 			lex_error(lx, "unknown statement \"%.40s\"", kw);
 	}
 
@@ -600,10 +663,12 @@ struct splat_input *fmt_splat_read(const char *path)
 	 * source of sigma 45 at NA 0.28 is light from beyond the horizon) */
 	double smax = in->source == SPLAT_SRC_CIRCLE ? in->sigma
 		    : in->source == SPLAT_SRC_ANNULAR ? in->s_out : in->pole_c + in->pole_r;
-	if (smax * in->na > 1)
+	check_na(lx, in);
+	if (smax * in->na > in->immersion)
 		die("%s:%ld: the source reaches %g NA = %g, beyond the sine of 90 degrees "
-		    "(the largest source radius times NA must be at most 1)",
-		    lex_name(lx), r.source_line ? r.source_line : 1L, smax, smax * in->na);
+		    "(the largest source radius times NA must be at most %g)",
+		    lex_name(lx), r.source_line ? r.source_line : 1L, smax, smax * in->na,
+		    in->immersion);
 	if (in->mask.nlayers || in->window_auto)
 		finish_layers(lx, in);
 	const struct splat_mask *m = &in->mask;
@@ -714,6 +779,21 @@ void fmt_splat_write(const char *path, const struct splat_input *in)
 	}
 	fputc('\n', f);
 	fputs("defocus", f); put(f, in->defocus); fputc('\n', f);
+	/* the vector statements when not their defaults (older files stay as
+	 * they were written) */
+	static const char *pols[] = {"unpolarized", "x", "y", "te", "tm"};
+	if (in->vector)
+		fputs("imaging vector\n", f);
+	if (in->immersion != 1) {
+		fputs("immersion", f); put(f, in->immersion); fputc('\n', f);
+	}
+	if (in->polarization != SPLAT_POL_UNPOLARIZED)
+		fprintf(f, "polarization %s\n", pols[in->polarization]);
+	if (isinf(in->reduction))
+		fputs("reduction inf\n", f);
+	else if (in->reduction != 4) {
+		fputs("reduction", f); put(f, in->reduction); fputc('\n', f);
+	}
 	if (in->planes) {
 		fputs("resist thickness", f); put(f, in->resist_thick);
 		fputs(" index", f); put(f, in->resist_index);

@@ -7,6 +7,8 @@
  *   wavelength 0.436          na 0.28          sigma 0.5
  *   annular s_in s_out        quadrupole c r   dipole c r [x|y]
  *   defocus d
+ *   imaging vector|scalar     immersion N      polarization x|y|te|tm|unpolarized
+ *   reduction R|inf
  *   resist thickness T index n planes N     (an image stack, see stack.5)
  *   coma w field hx hy        astigmatism w field hx hy     spherical w
  *   curvature w field hx hy   distortion w field hx hy      zernike n c
@@ -45,6 +47,14 @@ enum splat_aberr_kind {
 	SPLAT_AB_CURVATURE,     /* w h^2 rho^2 */
 	SPLAT_AB_DISTORTION,    /* w h^3 rho cos(theta - theta_h) */
 	SPLAT_AB_ZERNIKE        /* fringe Zernike number n, coefficient w */
+};
+
+/* Polarisation of the illumination at the mask (vector imaging). */
+enum splat_pol {
+	SPLAT_POL_UNPOLARIZED,  /* the intensities of x and y averaged */
+	SPLAT_POL_X, SPLAT_POL_Y,
+	SPLAT_POL_TE,           /* (-s_y, s_x) / |s| for source point s */
+	SPLAT_POL_TM            /* (s_x, s_y) / |s| */
 };
 
 struct splat_aberr {
@@ -130,6 +140,12 @@ struct splat_input {
 	int clip;                       /* clip on: polygons may cross the window */
 	int window_auto;                /* window auto: from the gds shapes' bounding box */
 	double margin;                  /* window auto margin, micrometres (-1: 2 lambda/NA) */
+	/* vector imaging: imaging, immersion, polarization, reduction */
+	int vector;                     /* imaging vector: 1; scalar (default): 0 */
+	double immersion;               /* real index between lens and resist (default 1) */
+	enum splat_pol polarization;    /* default unpolarized */
+	double reduction;               /* lens reduction R (default 4); INFINITY for inf */
+	long na_line;                   /* line of the na statement (0: default) */
 };
 
 /* Most planes of an image stack: far beyond any use (a plane every

@@ -55,7 +55,8 @@ void fmt_stack_free(struct image_stack *s)
 
 /* "stack" is read; the pairs planes N, thickness T, index n follow in
  * any order, each once, and optionally wavelength L (stacks written
- * before it was recorded have none).  Returns the token after them. */
+ * before it was recorded have none) and the word film.  Returns the
+ * token after them. */
 static const char *header(struct lex *lx, struct image_stack *s)
 {
 	int got = 0;
@@ -63,14 +64,16 @@ static const char *header(struct lex *lx, struct image_stack *s)
 		const char *k = lex_token(lx);
 		int bit = !k ? 0 : strcasecmp(k, "planes") == 0 ? 1 :
 			  strcasecmp(k, "thickness") == 0 ? 2 : strcasecmp(k, "index") == 0 ? 4 :
-			  strcasecmp(k, "wavelength") == 0 ? 8 : 0;
+			  strcasecmp(k, "wavelength") == 0 ? 8 : strcasecmp(k, "film") == 0 ? 16 : 0;
 		if ((got & 7) == 7 && !bit)
 			return k;
 		if (!bit || (got & bit))
 			lex_error(lx, "stack: expected \"stack planes N thickness T index n "
-				  "[wavelength L]\"");
+				  "[wavelength L] [film]\"");
 		got |= bit;
-		if (bit == 1) {
+		if (bit == 16) {
+			s->film = 1;
+		} else if (bit == 1) {
 			s->n = (int)lex_count(lx, "the number of planes", 2, STACK_MAX_PLANES);
 		} else if (bit == 2) {
 			s->thick = lex_number(lx, "the resist thickness");
@@ -187,6 +190,8 @@ void fmt_stack_write(const char *path, const struct image_stack *s)
 		fputs(" wavelength ", a->f);
 		num_print(a->f, s->wavelength);
 	}
+	if (s->film)
+		fputs(" film", a->f);
 	fputc('\n', a->f);
 	for (int k = 0; k < s->n; k++) {
 		fputs("depth ", a->f);

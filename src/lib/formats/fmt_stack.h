@@ -4,7 +4,7 @@
  * bleach and contour read.  Text, one header line, then the planes top
  * first, each a depth line and a whole contour-file (fmt_contour.h):
  *
- *   stack planes N thickness T index n wavelength L
+ *   stack planes N thickness T index n wavelength L [film]
  *   depth 0
  *   xmin xmax ymin ymax
  *   nxpts nypts
@@ -14,7 +14,10 @@
  *
  * The word "stack" cannot begin a contour-file (whose first field is a
  * number), so every reader tells the two apart from the first token, and
- * plain contour-files are unchanged.  See man/man5/stack.5.
+ * plain contour-files are unchanged.  The word film says that the planes
+ * hold the intensity inside the film stack, every reflection and the
+ * absorption included (splat -bf with imaging vector), so that bleach
+ * applies no thin-film factor of its own.  See man/man5/stack.5.
  */
 #ifndef S3D_FMT_STACK_H
 #define S3D_FMT_STACK_H
@@ -31,6 +34,7 @@ struct image_stack {
 	double index;           /* resist real index (0: plain file) */
 	double wavelength;      /* of the exposure, um (0: not recorded, as in
 				 * stacks written before it was) */
+	int film;               /* 1: the intensity through the film stack (header word film) */
 	double *depth;          /* n depths below the resist top, um: 0 first,
 				 * increasing, thick last */
 	struct contour **plane; /* n images on one window and grid */
