@@ -4,7 +4,9 @@
 #   - car's pag alone changes nothing: the rate file is byte-identical to
 #     the one without it;
 #   - the same seed writes the same bytes at -threads 1, 2, 3 and with
-#     SAMPLE3D_THREADS=2; another seed writes other bytes;
+#     SAMPLE3D_THREADS=2; another seed writes other bytes; -seed S writes
+#     the bytes of the statement's seed S, and is an error without the
+#     statement or out of range;
 #   - the ensemble mean: the window mean of M over 8 seeds is within 4
 #     standard errors (of the 8 seeds' spread) of the deterministic run's,
 #     for a bake whose reactions are linear in the acid (no quencher;
@@ -42,6 +44,16 @@ same t1.bin te.bin
 bleach -q -o s8.bin image.cont s8.in || fail "bleach fails with seed 8"
 ! cmp -s t1.bin s8.bin || fail "seeds 7 and 8 write the same rate file"
 ! cmp -s t1.bin pag.bin || fail "the stochastic run equals the deterministic one"
+# -seed S replaces the statement's seed, byte for byte; it needs the statement
+bleach -q -seed 8 -o o8.bin image.cont s7.in || fail "bleach -seed 8 fails"
+same o8.bin s8.bin
+expect_error bleach -q -seed 8 -o x.bin image.cont pag.in
+grep -q "no stochastic statement" err.txt || fail "-seed without stochastic: $(cat err.txt)"
+for v in -1 1.5 x 9007199254740992; do
+	bleach -q -seed $v -o x.bin image.cont s7.in 2>err.txt
+	[ $? -eq 2 ] || fail "-seed $v: expected a usage error (status 2)"
+	[ ! -e x.bin ] || fail "-seed $v left x.bin"
+done
 
 # the window mean of M in an ASCII rate file
 mmean() {
