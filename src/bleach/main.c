@@ -282,7 +282,9 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 		    input, in->line_peb, n, change);
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
-	budget_check(input, what, (double)np * n * T_PEB, (double)np * 3 * sizeof(double));
+	/* h, q, the m integral, and the noisy quencher of a stochastic run */
+	budget_check(input, what, (double)np * n * T_PEB,
+		     (double)np * (3 + in->stochastic) * sizeof(double));
 	double change_xy;
 	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
 	/* shot noise after the step choice: the counts are chosen for the
