@@ -52,7 +52,8 @@ PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))
 PLOT_SHARE_OBJ := $(PLOT_SHARE:%.c=$(BUILD)/%.o)
 PROGS    := $(DIR_PROGS) $(PLOT_PROGS)
-BINS     := $(PROGS:%=$(BUILD)/bin/%) $(BUILD)/bin/sample3D $(BUILD)/bin/sample2D $(BUILD)/bin/fem
+DRIVERS  := sample3D sample2D fem
+BINS     := $(PROGS:%=$(BUILD)/bin/%) $(DRIVERS:%=$(BUILD)/bin/%) $(BUILD)/bin/etchopts.sh
 
 # C unit tests: tests/<area>/*.c, each linked with the library and with the
 # objects of src/<area>/ other than main.o (so tests can call into etch).
@@ -83,20 +84,17 @@ $(BUILD)/bin/%: $(BUILD)/src/plot/%.o $(PLOT_SHARE_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(PLOT_SHARE_OBJ) $(LIB) $(LDLIBS)
 
-$(BUILD)/bin/sample3D: scripts/sample3D.sh
+# the drivers (POSIX sh), and the etch options sample3D and fem share,
+# which they source from beside themselves (not a program: not executable)
+$(DRIVERS:%=$(BUILD)/bin/%): $(BUILD)/bin/%: scripts/%.sh
 	@mkdir -p $(dir $@)
-	cp scripts/sample3D.sh $@
+	cp $< $@
 	chmod +x $@
 
-$(BUILD)/bin/fem: scripts/fem.sh
+$(BUILD)/bin/etchopts.sh: scripts/etchopts.sh
 	@mkdir -p $(dir $@)
-	cp scripts/fem.sh $@
-	chmod +x $@
-
-$(BUILD)/bin/sample2D: scripts/sample2D.sh
-	@mkdir -p $(dir $@)
-	cp scripts/sample2D.sh $@
-	chmod +x $@
+	cp $< $@
+	chmod -x $@
 
 # tests/<area>/<name>.c -> $(BUILD)/tests/<area>/<name>
 .SECONDEXPANSION:
@@ -135,12 +133,10 @@ regen: all
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5
 	for p in $(PROGS); do cp $(BUILD)/bin/$$p $(DESTDIR)$(PREFIX)/bin/; done
-	cp scripts/sample3D.sh $(DESTDIR)$(PREFIX)/bin/sample3D
-	chmod +x $(DESTDIR)$(PREFIX)/bin/sample3D
-	cp scripts/fem.sh $(DESTDIR)$(PREFIX)/bin/fem
-	chmod +x $(DESTDIR)$(PREFIX)/bin/fem
-	cp scripts/sample2D.sh $(DESTDIR)$(PREFIX)/bin/sample2D
-	chmod +x $(DESTDIR)$(PREFIX)/bin/sample2D
+	for d in $(DRIVERS); do cp scripts/$$d.sh $(DESTDIR)$(PREFIX)/bin/$$d && \
+		chmod +x $(DESTDIR)$(PREFIX)/bin/$$d; done
+	cp scripts/etchopts.sh $(DESTDIR)$(PREFIX)/bin/etchopts.sh
+	chmod 644 $(DESTDIR)$(PREFIX)/bin/etchopts.sh
 	cp man/man1/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp man/man5/*.5 $(DESTDIR)$(PREFIX)/share/man/man5/
 

@@ -1,6 +1,6 @@
 #!/bin/sh
-# docs/make-images.sh [BUILD] - remakes the pictures of the README's
-# walk-through (docs/img/*.png) from our own PostScript, rendered by
+# docs/make-images.sh [BUILD] - remakes the pictures of
+# docs/walkthrough.md (docs/img/*.png) from our own PostScript, rendered by
 # ghostscript.  Run after a change that alters the plots.
 set -eu
 TOP=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,7 +31,7 @@ png profile-20s 1 profile.ps
 png profile-60s 3 profile.ps
 png cut "" cut.ps
 # fem: Bossung curves and process window of a 7 x 7 matrix of the NA 0.6
-# contact (README, "Focus-exposure matrices")
+# contact (docs/walkthrough.md, "Focus-exposure matrices")
 H=$TOP/examples/contact-highna
 fem -q -if "$H/mask.in" -bf "$H/resist.in" -et 60 -method fmm -dose 60:120:10 -focus -1.2:0.6:0.3 \
 	-measure "-rel 5,95 -hole 0 0" -target 0.5 -tol 10 -j 2 >/dev/null

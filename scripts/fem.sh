@@ -13,6 +13,11 @@
 set -eu
 
 prog=fem
+# the programs and the etch pass-through options (etchopts.sh, shared with
+# sample3D): beside this script first (a build or an install), then PATH
+here=$(cd "$(dirname "$0")" && pwd)
+[ -r "$here/etchopts.sh" ] || { echo "$prog: cannot find etchopts.sh beside $0" >&2; exit 1; }
+. "$here/etchopts.sh"
 usage() {
 	cat <<'U'
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
@@ -41,11 +46,9 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
   -sbatch OPTS  with -slurm: options submit.sh gives sbatch (e.g. "-p short")
   -collect      collect DIR into fem.dat, bossung.ps and the window
   -q            quiet: no progress lines
-  etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
-              -rl L -linear -clip N -method ray|fmm -refine N
-              -etch "OPTS" passes any other etch options verbatim
-  --help        this text
+  -h, --help    this text
 U
+	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
 # a usage error: one line, exit 2 (the usage is fem --help)
@@ -79,16 +82,7 @@ while [ $# -gt 0 ]; do
 	-sbatch) need_val "$@"; sbopts=$2; shift 2 ;;
 	-collect) collect=yes; shift ;;
 	-q) quiet=-q; shift ;;
-	-linear) etchopts="$etchopts -linear"; shift ;;
-	-deloop)
-		case ${2:-} in
-		[0-9]*) etchopts="$etchopts -deloop $2"; shift 2 ;;
-		*) etchopts="$etchopts -deloop"; shift ;;
-		esac ;;
-	-dt|-seg|-smax|-smin|-rl|-clip|-method|-refine)
-		need_val "$@"; etchopts="$etchopts $1 $2"; shift 2 ;;
-	-etch) need_val "$@"; etchopts="$etchopts $2"; shift 2 ;;
-	*) bad "unknown option $1" ;;
+	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
 
@@ -97,8 +91,7 @@ isnum() { # isnum WORD: a decimal number
 }
 posnum() { isnum "$1" && awk -v v="$1" 'BEGIN { exit !(v > 0) }'; }
 
-# the programs: beside this script first (a build or an install), then PATH
-here=$(cd "$(dirname "$0")" && pwd)
+# the programs: beside this script first ($here), then PATH
 findprog() {
 	if [ -x "$here/$1" ] && [ ! -d "$here/$1" ]; then
 		echo "$here/$1"

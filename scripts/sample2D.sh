@@ -29,7 +29,7 @@ usage: sample2D -if splat-inputfile -cut x1 y1 x2 y2 -bf bleach-inputfile
                    huygens or fmm; -seg, -dt, -cells pass to etch2d
   -plot            also preview the profiles on X11 (drawplot)
   -q               quiet: no progress lines
-  --help           this text
+  -h, --help       this text
 U
 }
 die() { echo "$prog: $*" >&2; exit 1; }

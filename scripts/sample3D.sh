@@ -14,16 +14,21 @@ set -eu
 
 prog=sample3D
 # the programs beside this script come first (a build's bin/, or where
-# make install put them), then PATH: never another installed splat
+# make install put them), then PATH: never another installed splat; a
+# script run by a bare name (sh sample3D.sh) is in the current directory
+here=.
 case $0 in
 */*) here=$(cd "${0%/*}" && pwd) && PATH=$here:$PATH ;;
 esac
+# the etch pass-through options, shared with fem: beside this script too
+[ -r "$here/etchopts.sh" ] || { echo "$prog: cannot find etchopts.sh beside $0" >&2; exit 1; }
+. "$here/etchopts.sh"
 usage() {
 	cat <<'U'
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
-                [-et etchtime] [-pt printtime] [-plot] [-h] [-e | -noe]
-                [-cut x|y VALUE|mid] [etch options] [-q]
+                [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
+                [-cut x|y VALUE|mid] [-last] [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
   -bf FILE    run bleach with FILE (needs -if or -cf)
@@ -34,19 +39,18 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -et TIME    development time (s); etch runs only when it is given
   -pt TIME    print interval (s)
   -plot       interactive pdraw of the result (X11)
-  -h          the profile as the thesis' hidden-line mesh (default: shaded)
+  -hidden     the profile as the thesis' hidden-line mesh (default: shaded)
   -e          the profile with every axis scaled to the same length
   -noe        the profile at true scale (default: z stretched when thin)
   -cut x|y V  the cross-section picture's plane (default: y mid, the
               middle of the cell); also written by etch to curves.cut
+  -last       etch writes only the final set, and the pictures show it
   -q          quiet: no progress lines
-  etch options passed through: -deloop [n] -dt T -seg L -smax R -smin R
-              -rl L -linear -clip N -method ray|fmm -no2d -last
-              -etch "OPTS" passes any other etch options verbatim
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
               and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0"
-  --help      this text
+  -h, --help  this text
 U
+	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
 bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
@@ -58,7 +62,7 @@ printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
 cutaxis="" cutval="" measureopts="" last=""
 while [ $# -gt 0 ]; do
 	case $1 in
-	--help) usage; exit 0 ;;
+	-h|--help) usage; exit 0 ;;
 	-if) need_val "$@"; splat_in=$2; shift 2 ;;
 	-cf) need_val "$@"; contour=$2; shift 2 ;;
 	-bf) need_val "$@"; bleach_in=$2; shift 2 ;;
@@ -68,25 +72,15 @@ while [ $# -gt 0 ]; do
 	-et) need_val "$@"; etchtime=$2; shift 2 ;;
 	-pt) need_val "$@"; printtime=$2; shift 2 ;;
 	-plot) plot=yes; shift ;;
-	-h) hidden=-h; shift ;;
+	-hidden) hidden=yes; shift ;;
 	-e) stretch=-e; shift ;;
 	-noe) stretch="-zs 1"; shift ;;
 	-q) quiet=-q; shift ;;
-	-linear|-no2d) etchopts="$etchopts $1"; shift ;;
 	-last) etchopts="$etchopts -last"; last=yes; shift ;;
-	-deloop)
-		# an optional step count follows
-		case ${2:-} in
-		[0-9]*) etchopts="$etchopts -deloop $2"; shift 2 ;;
-		*) etchopts="$etchopts -deloop"; shift ;;
-		esac ;;
-	-dt|-seg|-smax|-smin|-rl|-clip|-method)
-		need_val "$@"; etchopts="$etchopts $1 $2"; shift 2 ;;
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		cutaxis=$2 cutval=$3; shift 3 ;;
-	-etch) need_val "$@"; etchopts="$etchopts $2"; shift 2 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
-	*) bad "unknown option $1" ;;
+	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
 

@@ -16,7 +16,8 @@
 # its counts; the areas come in the order they finish, the closing line
 # "N passed, N failed" last.
 #
-# Environment: TESTS="pattern" runs only the tests whose name contains it;
+# Environment: TESTS="pattern ..." runs only the tests whose name contains
+# one of the patterns (words: TESTS="etch fmm");
 # TEST_TIMEOUT (seconds, default 600) bounds each test; TEST_JOBS sets the
 # number of tests run at once.
 set -u
@@ -52,7 +53,11 @@ for t in $list; do
 	name=${t#tests/}
 	case $name in *.sh) ;; *) [ -x "$BUILD/$t" ] || continue ;; esac
 	if [ -n "${TESTS:-}" ]; then
-		case $name in *"$TESTS"*) ;; *) continue ;; esac
+		hit=""
+		for pat in $TESTS; do
+			case $name in *"$pat"*) hit=yes ;; esac
+		done
+		[ -n "$hit" ] || continue
 	fi
 	sel="$sel $name"
 done

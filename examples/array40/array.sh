@@ -1,5 +1,5 @@
 #!/bin/sh
-# Issue 15's large-mask case: a SIZE x SIZE um (default 40) array of 0.5 um
+# The large-mask case: a SIZE x SIZE um (default 40) array of 0.5 um
 # contacts on a 1 um pitch through sample3D (splat, bleach, etch).
 # Usage: sh array.sh [SIZE] [sample3D options]; outputs go to $OUT/SIZE
 # (default: out/SIZE here).  Minutes and gigabytes: see README.
@@ -11,4 +11,4 @@ out=${OUT:-$here/out}/$size
 mkdir -p "$out"
 cd "$out"
 sh "$here/make-mask.sh" "$size" >mask.in
-sample3D -if mask.in -bf "$here/resist.in" -et 60 -last -h "$@"
+sample3D -if mask.in -bf "$here/resist.in" -et 60 -last -hidden "$@"

@@ -1,7 +1,7 @@
 #!/bin/sh
 # make-mask.sh SIZE - prints the splat input of a SIZE x SIZE um window of
 # 0.5 um contacts on a 1 um pitch (i-line, NA 0.6, sigma 0.5, a 0.05 um
-# grid), the large-mask case of issue 15.  mask.in is "make-mask.sh 40",
+# grid), the large-mask case.  mask.in is "make-mask.sh 40",
 # mask20.in "make-mask.sh 20".
 set -eu
 size=${1:?usage: make-mask.sh SIZE (um, an even integer)}

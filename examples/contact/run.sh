@@ -6,6 +6,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-$here/out}
 mkdir -p "$out/bake" "$out/nobake"
 cd "$out/bake"
-sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 60 -pt 20 -h -solid "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 60 -pt 20 -hidden -solid "$@"
 cd "$out/nobake"
-sample3D -if "$here/mask.in" -bf "$here/resist-nobake.in" -et 60 -pt 20 -h "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist-nobake.in" -et 60 -pt 20 -hidden "$@"

@@ -5,7 +5,7 @@
 # the space, through the defect) clears the defect's centre by 15 s, the
 # east-west cut (across the lines) still leaves resist there; the 3D
 # result of Figure 9.6 is examples/defect (sample3D).  Measured: the
-# centre clears at 13.7 s north-south, 15.2 s east-west (README).
+# centre clears at 13.7 s north-south, 15.2 s east-west (docs/workbench.md).
 # Usage: sh run.sh [sample2D options, e.g. -method fmm]; outputs in $OUT (default out/ here).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)

@@ -11,5 +11,5 @@ for r in "$here"/resist-*.in; do
 	name=$(basename "$r" .in)
 	mkdir -p "$out/$name"
 	cd "$out/$name"
-	sample3D -cf "$out/image.cont" -bf "$r" -et 30 -pt 10 -h -cut y 0 "$@"
+	sample3D -cf "$out/image.cont" -bf "$r" -et 30 -pt 10 -hidden -cut y 0 "$@"
 done

@@ -5,4 +5,4 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
-sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -pt 10 -h "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -pt 10 -hidden "$@"

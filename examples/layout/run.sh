@@ -7,4 +7,4 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 # splat reads sram.gds beside mask.in (a relative gds FILE is relative to the input's folder)
-sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -pt 10 -h "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -pt 10 -hidden "$@"

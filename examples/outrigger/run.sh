@@ -6,6 +6,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-$here/out}
 mkdir -p "$out/bake" "$out/nobake"
 cd "$out/bake"
-sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -h "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 30 -hidden "$@"
 cd "$out/nobake"
-sample3D -if "$here/mask.in" -bf "$here/resist-nobake.in" -et 30 -h "$@"
+sample3D -if "$here/mask.in" -bf "$here/resist-nobake.in" -et 30 -hidden "$@"

@@ -6,5 +6,5 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-$here/out}
 for r in olinhunt6512 shipley1470; do
 	mkdir -p "$out/$r" && cd "$out/$r"
-	sample3D -if "$here/mask.in" -bf "$here/resist-$r.in" -et 10 -h "$@"
+	sample3D -if "$here/mask.in" -bf "$here/resist-$r.in" -et 10 -hidden "$@"
 done

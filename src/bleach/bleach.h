@@ -6,7 +6,7 @@
  *
  * Depth convention inside the modules: node j of a column lies at depth
  * j * dz below the original resist top (j = 0 the top, j = nz - 1 the
- * resist-substrate interface).  Only main.c maps it to the rate file's
+ * resist-substrate interface).  Only run.c maps it to the rate file's
  * z, which runs from -thickness (k = 0) up to 0.
  */
 #ifndef S3D_BLEACH_H
@@ -15,6 +15,24 @@
 #include "fmt_bleach.h"
 
 #include <stddef.h>
+
+/* ---- run.c: the 3D pipeline, from the image to the rate array ---- */
+
+/* What the command line asks of a 3D run (bleach(1)). */
+struct bleach_opts {
+	const char *contour;    /* the aerial image or image stack */
+	const char *input;      /* the resist file (bleach.5) */
+	const char *output;     /* the rate file, or NULL for the default name */
+	int ascii, solid, quiet;
+	double level;           /* M of the -solid surface */
+	int have_dose;          /* -dose given: dose replaces the input's */
+	double dose;            /* mJ/cm2 */
+	long seed;              /* -seed: replaces the stochastic statement's; -1 if not given */
+};
+
+/* Reads, exposes, bakes and writes the rate array (and mxyz.solid.3D);
+ * dies on bad input. */
+void bleach_run(const struct bleach_opts *o);
 
 /* ---- thinfilm.c: characteristic-matrix standing waves (thesis 2.1) ---- */
 
@@ -48,8 +66,9 @@ struct exposure {
 
 /* Step accuracy: C * h * Imax stays below this.  RK4 and the Hermite
  * interpolation then err by ~1e-8 in M (measured: halving the step
- * changes M by ~3e-8 on Olin Hunt 6512), far below the 1e-4 the issue
- * allows (checked by tests/bleach/expose.c). */
+ * changes M by ~3e-8 on Olin Hunt 6512), far below the 1e-4 in M that
+ * tests/bleach/expose.c allows against the closed form and the halved
+ * step. */
 #define EXPOSE_STEP 0.1
 
 /* Most dose steps of one run: beyond, C * dose is absurd (every column
@@ -136,7 +155,7 @@ void bake_rows(double *rows, int nrows, int n, double d, double sigma);
 /* The same for the rows of a and of b (b may be NULL), one matrix. */
 void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 
-/* ---- peb.c: reaction-diffusion bake of a CA positive resist (issue 18) ---- */
+/* ---- peb.c: reaction-diffusion bake of a CA positive resist ---- */
 
 struct peb_params {
 	double q0, kamp, p, kloss, kq;  /* car: -, 1/s, -, 1/s, 1/s */

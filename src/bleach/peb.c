@@ -1,6 +1,6 @@
 /*
  * peb.c - the post-exposure bake of a chemically amplified positive
- * resist (issue 18): acid h, quencher q and protected-site fraction m,
+ * resist: acid h, quencher q and protected-site fraction m,
  *
  *     dh/dt = Dh lap(h) - kq h q - kloss h
  *     dq/dt = Dq lap(q) - kq h q

@@ -1,6 +1,6 @@
 /*
  * stack.c - the exposure from an image stack: the aerial image at several
- * depths inside the resist (splat's resist statement, stack.5, issue 11),
+ * depths inside the resist (splat's resist statement, stack.5),
  * in place of the thesis' one image applied unchanged at every depth.
  *
  * The intensity a node of column (x, y) at depth d receives is the stack's

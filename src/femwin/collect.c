@@ -12,6 +12,7 @@
  * a measure table is an error, since it means something else went wrong.
  */
 #include "femwin.h"
+#include "fmt_measure.h"
 #include "fmt_plot.h"
 #include "fmt_template.h"
 #include "num.h"
@@ -170,15 +171,20 @@ int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
 				first_missing = &in[i];
 			continue;
 		}
-		struct fem_measure m;
-		fmt_fem_read_measure(in[i].table, &m);
+		/* fem.dat takes the first height's cd, which fem(5) holds
+		 * not negative, and the feature's figures */
+		struct measure_table m;
+		fmt_measure_read(in[i].table, &m);
+		if (!(m.rows[0].cd >= 0))
+			die("%s: negative cd", in[i].table);
 		struct fem_point *p = &t.p[t.n++];
 		p->focus = in[i].focus;
 		p->dose = in[i].dose;
-		p->cd = m.cd;
+		p->cd = m.rows[0].cd;
 		p->swa = m.swa;
 		p->cleared = m.cleared;
-		p->loss = m.loss;
+		p->loss = m.resist_loss;
+		fmt_measure_free(&m);
 	}
 	sort_stable(t.p, t.n);
 	struct fem_stoch_row *rows = NULL;

@@ -30,6 +30,8 @@ static double lift(const struct surf *s, double z)
 	return z < zlo ? zlo : z;
 }
 
+double feature_height(const struct surf *s, double z) { return lift(s, z); }
+
 static int box_edge(const struct surf *s, int axis, struct surf_span sp)
 {
 	return sp.lo <= s->box[2 * axis] || sp.hi >= s->box[2 * axis + 1];

@@ -7,6 +7,8 @@
 #include "args.h"
 #include "fmt_plot.h"
 #include "measure.h"
+#include "fmt_measure.h"
+#include "rough.h"
 #include "num.h"
 #include "util.h"
 
@@ -16,8 +18,9 @@
 
 static const char usage[] =
 	"usage: measure [-s set] (-at z1,z2,... | -rel p1,p2,...)\n"
-	"               (-hole X Y | -space X Y x|y | -line X Y x|y)\n"
-	"               [-o file] [-plot file] [-force] surface.plot\n"
+	"               (-hole X Y | -space X Y x|y | -line X Y x|y | -holes)\n"
+	"               [-ler [-psd file]] [-lcdu] [-o file] [-plot file] [-force]\n"
+	"               surface.plot\n"
 	"  -s set          the set (print time) to measure, from 1 in file order\n"
 	"                  (default: the last)\n"
 	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
@@ -28,6 +31,14 @@ static const char usage[] =
 	"  -space X Y x|y  the width of the developed interval through (X, Y)\n"
 	"                  along x (or y)\n"
 	"  -line X Y x|y   the width of the resist interval through (X, Y)\n"
+	"  -holes          every hole of the section (with -lcdu)\n"
+	"  -ler            with -space or -line at one height: the roughness of\n"
+	"                  its two edges along the whole box (LER, LWR,\n"
+	"                  correlation length)\n"
+	"  -psd file       with -ler: the edges' power spectral density as a 2D\n"
+	"                  plot file (drawplot -xlog -ylog)\n"
+	"  -lcdu           with -holes at one height: each hole's centroid and cd,\n"
+	"                  and the local CD uniformity (3 sigma)\n"
 	"  -o file         write the table to file (default: standard output)\n"
 	"  -plot file      also write cd against z as a 2D plot file (drawplot)\n"
 	"  -force          measure a surface that crosses itself (loops left by\n"
@@ -97,6 +108,37 @@ static int parse_feature(struct args *a, struct options *o)
 	return 1;
 }
 
+/* -ler, -lcdu, -holes: figures of a whole feature (rough.h) */
+static int parse_whole(struct args *a, struct options *o)
+{
+	if (args_flag(a, "-ler"))
+		o->ler = 1;
+	else if (args_flag(a, "-lcdu"))
+		o->lcdu = 1;
+	else if (args_flag(a, "-holes"))
+		o->holes = 1;
+	else
+		return 0;
+	return 1;
+}
+
+static void check_whole(struct args *a, const struct options *o)
+{
+	if (o->ler && (!o->have_kind || o->kind == HOLE))
+		args_error(a, "option -ler needs -space X Y x|y or -line X Y x|y");
+	if (o->psd && !o->ler)
+		args_error(a, "option -psd needs -ler");
+	if (o->lcdu && !o->holes)
+		args_error(a, "option -lcdu needs -holes");
+	if (o->holes && !o->lcdu)
+		args_error(a, "option -holes needs -lcdu");
+	if (o->holes && o->plot)
+		args_error(a, "option -plot needs -hole, -space or -line");
+	if ((o->ler || o->lcdu) && o->nh > 1)
+		args_error(a, "option %s measures at one height: give one value to -at or -rel",
+			   o->ler ? "-ler" : "-lcdu");
+}
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
@@ -119,6 +161,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->force = 1;
 			continue;
 		}
+		if (args_str(&a, "-psd", &o->psd) || parse_whole(&a, o))
+			continue;
 		args_operand(&a, slots, 1, "surface file");
 	}
 	if (at && rel)
@@ -136,8 +180,11 @@ static void parse_options(int argc, char **argv, struct options *o)
 					   o->h[i]);
 				break;
 			}
-	if (!o->have_kind)
+	if (o->holes && o->have_kind)
+		args_error(&a, "give -holes or one of -hole, -space and -line, not both");
+	else if (!o->have_kind && !o->holes)
 		args_error(&a, "give the feature: -hole X Y, -space X Y x|y or -line X Y x|y");
+	check_whole(&a, o);
 	if (!o->input)
 		args_error(&a, "give the surface file (curves.plot of etch)");
 	args_done(&a, NULL);
@@ -176,7 +223,7 @@ static void check(const struct options *o, const struct surf *s, long setno, dou
 {
 	const double *box = s->box;
 	err[0] = '\0';
-	if (o->x < box[0] || o->x > box[1] || o->y < box[2] || o->y > box[3]) {
+	if (!o->holes && (o->x < box[0] || o->x > box[1] || o->y < box[2] || o->y > box[3])) {
 		snprintf(err, errsz, "the point (%g, %g) is outside the box x %g..%g, y %g..%g",
 			 o->x, o->y, box[0], box[1], box[2], box[3]);
 		return;
@@ -206,6 +253,19 @@ static void check(const struct options *o, const struct surf *s, long setno, dou
 		     "by the ray test alone", o->input, setno, open);
 }
 
+/* -lcdu -holes: the table of every hole instead of one feature's. */
+static int holes_main(struct options *o, struct surf *s, double *z)
+{
+	struct lcdu l;
+	lcdu_measure(s, z[0], &l);
+	fmt_measure_write_holes(o->out, l.holes, l.n, l.lcdu >= 0 ? l.lcdu : NAN);
+	lcdu_free(&l);
+	free(z);
+	free(o->h);
+	surf_free(s);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct options o;
@@ -222,9 +282,23 @@ int main(int argc, char **argv)
 		die("%s: %s", o.input, err);
 	}
 	surf_index(s);
+	if (o.holes)
+		return holes_main(&o, s, z);
 
 	struct result r;
 	measure_feature(s, &o, z, &r);
+	struct roughness rough;
+	r.rough = NULL;
+	if (o.ler) {
+		if (roughness_measure(s, &o, z[0], &r.rows[0], &rough, err, sizeof err)) {
+			free(r.rows);
+			surf_free(s);
+			free(z);
+			free(o.h);
+			die("%s: %s", o.input, err);
+		}
+		r.rough = &rough;
+	}
 	for (int i = 0; i < r.nrows; i++)
 		if (r.rows[i].edge) {
 			warn("%s: at z = %g the %s reaches the box edge: its cd is cut there",
@@ -232,9 +306,17 @@ int main(int argc, char **argv)
 			     o.kind == HOLE ? "hole" : o.kind == SPACE ? "space" : "line");
 			break;
 		}
+	if (o.psd || o.plot)
+		aout_defer();
 	report_table(&o, &r);
 	if (o.plot)
 		report_plot(&o, s, &r);
+	if (o.psd)
+		roughness_psd(o.psd, &rough);
+	if (o.psd || o.plot)
+		aout_finish();
+	if (o.ler)
+		roughness_free(&rough);
 	free(r.rows);
 	free(z);
 	free(o.h);

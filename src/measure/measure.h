@@ -8,6 +8,8 @@
 
 #include "surf.h"
 
+#include <stdio.h>
+
 enum kind { HOLE, SPACE, LINE };
 
 struct options {
@@ -22,6 +24,10 @@ struct options {
 	const char *out;        /* table, "-" stdout */
 	const char *plot;       /* 2D plot file or NULL */
 	int force;              /* measure a surface with crossings */
+	int ler;                /* -ler: edge roughness (rough.h) */
+	const char *psd;        /* -psd file or NULL */
+	int holes;              /* -holes: every hole of the section */
+	int lcdu;               /* -lcdu */
 	const char *input;
 };
 
@@ -35,6 +41,8 @@ struct row {
 	int edge;               /* the feature reaches the box edge here */
 };
 
+struct roughness;
+
 struct result {
 	struct row *rows;
 	int nrows;
@@ -43,12 +51,16 @@ struct result {
 	double swa;             /* degrees */
 	double resist_loss;     /* um */
 	int cleared;
+	const struct roughness *rough;  /* -ler: its lines follow the table */
 };
 
 /* Measures the feature of o on surface s at every height (heights in um,
  * in the box). */
 void measure_feature(const struct surf *s, const struct options *o,
 		     const double *z, struct result *r);
+
+/* z raised off the substrate as the table's sections are (feature.c). */
+double feature_height(const struct surf *s, double z);
 
 /* The table on o->out, and the plot file if o->plot. */
 void report_table(const struct options *o, const struct result *r);

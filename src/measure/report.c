@@ -1,66 +1,40 @@
 /*
- * report.c - measure's outputs: the table (a '#' line of column names,
- * one row per height, then '#' lines of the feature's figures) and the cd
- * against z plot file for drawplot.
- *
- * Numbers are rounded to a fixed resolution before printing (lengths to
- * 1e-6 um, areas to 1e-9 um2, angles to 1e-3 degree) and printed in the
- * shortest form that reads back, so tables are short, and equal across
- * machines whose last bits differ.
+ * report.c - measure's outputs: the table (fmt_measure.h, measure(5): a
+ * '#' line of column names, one row per height, then '#' lines of the
+ * feature's figures) and the cd against z plot file for drawplot.
  */
 #include "measure.h"
+#include "fmt_measure.h"
+#include "rough.h"
 #include "fmt_plot.h"
-#include "num.h"
 #include "util.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
-
-enum { RES_LEN = 1000000, RES_AREA = 1000000000, RES_DEG = 1000 };
-
-static void put(FILE *f, double v, double res, int first)
-{
-	char buf[NUM_BUFSZ];
-	if (!first)
-		fputc(' ', f);
-	fputs(num_fmt(buf, round(v * res) / res), f);
-}
 
 void report_table(const struct options *o, const struct result *r)
 {
-	struct aout *a = aout_open(o->out);
-	FILE *f = a->f;
-	if (o->kind == HOLE)
-		fputs("# z cd area dx dy\n", f);
-	else
-		fputs("# z cd lo hi\n", f);
+	struct measure_table t = {
+		.hole = o->kind == HOLE, .nrows = r->nrows,
+		.rows = xreallocarray(NULL, (size_t)(r->nrows > 0 ? r->nrows : 1), sizeof *t.rows),
+		.have_swa = r->have_swa, .swa = r->swa_known ? r->swa : NAN,
+		.resist_loss = r->resist_loss, .cleared = r->cleared,
+	};
 	for (int i = 0; i < r->nrows; i++) {
 		const struct row *w = &r->rows[i];
-		put(f, w->z, RES_LEN, 1);
-		put(f, w->cd, RES_LEN, 0);
-		if (o->kind == HOLE) {
-			put(f, w->a, RES_AREA, 0);
-			put(f, w->b, RES_LEN, 0);
-			put(f, w->c, RES_LEN, 0);
-		} else {
-			put(f, w->a, RES_LEN, 0);
-			put(f, w->b, RES_LEN, 0);
-		}
-		fputc('\n', f);
+		t.rows[i] = (struct measure_row){w->z, w->cd, {w->a, w->b, w->c}};
 	}
-	if (r->have_swa) {
-		fputs("# swa", f);
-		if (r->swa_known)
-			put(f, r->swa, RES_DEG, 0);
-		else
-			fputs(" -", f);
-		fputc('\n', f);
+	if (r->rough) {
+		const struct roughness *g = r->rough;
+		t.have_rough = 1;
+		t.ler[0] = g->ler[0];
+		t.ler[1] = g->ler[1];
+		t.lwr = g->lwr;
+		t.corr_length = g->corr[0] >= 0 && g->corr[1] >= 0 ?
+			0.5 * (g->corr[0] + g->corr[1]) : NAN;
 	}
-	fputs("# resist_loss", f);
-	put(f, r->resist_loss, RES_LEN, 0);
-	fprintf(f, "\n# cleared %s\n", r->cleared ? "yes" : "no");
-	aout_commit(a);
+	fmt_measure_write(o->out, &t);
+	fmt_measure_free(&t);
 }
 
 static int by_z(const void *p, const void *q)

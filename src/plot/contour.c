@@ -45,12 +45,8 @@ static const char usage_head[] =
 	"                   its size) is beyond the limits (also SAMPLE3D_BIG=1)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
-	PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("noplot"),
-	PLOT_OPT_ONOFF("postscript"), PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"),
-	PLOT_OPT_ONOFF("contlabel"), {"joinlevel", OPT_WORD, 0, 0, "high|low"},
-	PLOT_OPT_SCALE, {"linetypes", OPT_INT, 1, 3, NULL},
-	PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
+	PLOT_OPT_COMMON, PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("contlabel"),
+	{"joinlevel", OPT_WORD, 0, 0, "high|low"}, {"linetypes", OPT_INT, 1, 3, NULL},
 	/* not in the guide's list: the step, so scripts need not pass -cstep */
 	{"cstep", OPT_NUM, 0, 1e300, NULL},
 	{NULL, 0, 0, 0, NULL}
@@ -465,111 +461,77 @@ static void check_triangle(const char *path, const struct plot_file *pf, int si,
 		    "closing on the first)", path, line, ci + 1, si + 1);
 }
 
-int main(int argc, char **argv)
+/* A -3D input: the triangles (each checked) and their z range. */
+static struct plot_file *read_triangles(const char *input, double *zmin, double *zmax)
 {
-	struct options o;
-	parse_options(argc, argv, &o);
-	struct opt_value val[sizeof spec / sizeof spec[0]];
-	memset(val, 0, sizeof val);
-	if (o.cmd.optfile)
-		fmt_options_read(o.cmd.optfile, spec, val);
-	struct ctx c;
-	memset(&c, 0, sizeof c);
-	c.s = (struct plot_settings){
-		.toplabel = "CONTOUR PLOT", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
-		.equalscale = 1, .postscript = 1, .line = 1, .scale = 1.0,
-		.xticks = 4, .yticks = 4,
-	};
-	plot_settings_resolve(&c.s, spec, val, &o.cmd);
-	const struct opt_value *v;
-	c.contlabel = (v = plot_opt(spec, val, "contlabel")) ? (int)v->num : 1;
-	if (o.nolabel)
-		c.contlabel = 0;
-	c.linetypes = (v = plot_opt(spec, val, "linetypes")) ? (int)v->num : 2;
-	if (o.grid)
-		c.s.grid = 1;
-	const char *join = o.join;
-	if (!join && (v = plot_opt(spec, val, "joinlevel")))
-		join = v->str;
-	double step = o.has_cstep ? o.cstep : 0;
-	if (!o.has_cstep && (v = plot_opt(spec, val, "cstep")) && v->num > 0)
-		step = v->num;
-
-	struct contour *g = NULL;
-	struct image_stack *stk = NULL; /* an image stack: one page per plane */
-	struct plot_file *pf = NULL;
-	double zmin = INFINITY, zmax = -INFINITY;
-	if (o.tri) {
-		/* the estimate (plot_budget), measured on a 401 x 401 grid as
-		 * triangles (3.8 M numbers, 47 MB): 84 MB, 0.33 s */
-		plot_budget(1, (char *const[]){(char *)o.input}, 24, 1e-7);
-		pf = fmt_plot_read(o.input, 3);
-		long line = pf->first_line;     /* after any comment lines */
-		for (int si = 0; si < pf->nsets; si++) {
-			line += 2;
-			for (int ci = 0; ci < pf->sets[si].ncurves; ci++) {
-				check_triangle(o.input, pf, si, ci, line);
-				line += 1 + pf->sets[si].curves[ci].npts;
-				const struct plot_curve *cv = &pf->sets[si].curves[ci];
-				for (int k = 0; k < cv->npts; k++) {
-					zmin = fmin(zmin, cv->p[3 * k + 2]);
-					zmax = fmax(zmax, cv->p[3 * k + 2]);
-				}
-			}
-			line++;
-		}
-	} else {
-		if (o.old) {
-			g = fmt_contour_read(o.input, 1);
-		} else {
-			stk = fmt_stack_read(o.input);
-			g = stk->plane[0];
-			if (stk->is_stack && o.ex)
-				die("%s: -ex writes the mesh of a single image, not of an image "
-				    "stack", o.input);
-		}
-		/* one set of levels for every plane, so that pages compare */
-		for (int pl = 0; pl < (stk ? stk->n : 1); pl++) {
-			const struct contour *gp = stk ? stk->plane[pl] : g;
-			size_t n = (size_t)gp->nx * gp->ny;
-			for (size_t k = 0; k < n; k++) {
-				zmin = fmin(zmin, gp->z[k]);
-				zmax = fmax(zmax, gp->z[k]);
+	/* the estimate (plot_budget), measured on a 401 x 401 grid as
+	 * triangles (3.8 M numbers, 47 MB): 84 MB, 0.33 s */
+	plot_budget(1, (char *const[]){(char *)input}, 24, 1e-7);
+	struct plot_file *pf = fmt_plot_read(input, 3);
+	long line = pf->first_line;     /* after any comment lines */
+	for (int si = 0; si < pf->nsets; si++) {
+		line += 2;
+		for (int ci = 0; ci < pf->sets[si].ncurves; ci++) {
+			check_triangle(input, pf, si, ci, line);
+			line += 1 + pf->sets[si].curves[ci].npts;
+			const struct plot_curve *cv = &pf->sets[si].curves[ci];
+			for (int k = 0; k < cv->npts; k++) {
+				*zmin = fmin(*zmin, cv->p[3 * k + 2]);
+				*zmax = fmax(*zmax, cv->p[3 * k + 2]);
 			}
 		}
-		if (o.ex)
-			write_mesh(g, o.input);
+		line++;
 	}
+	return pf;
+}
 
-	/* the labels the input carries are the defaults (contour.5) */
-	const struct plot_labels *lab = pf ? &pf->labels : &g->labels;
-	plot_settings_labels(&c.s, lab, spec, val, &o.cmd);
-
-	if (o.has_level) {
-		c.levels = xmalloc(sizeof *c.levels);
-		c.levels[0] = o.level;
-		c.nlevels = 1;
+/* A contour-file or an image stack (*stk, else NULL), its first image
+ * and the z range over every plane; -ex writes the mesh. */
+static struct contour *read_grid(const struct options *o, struct image_stack **stk,
+				 double *zmin, double *zmax)
+{
+	struct contour *g;
+	*stk = NULL;
+	if (o->old) {
+		g = fmt_contour_read(o->input, 1);
 	} else {
-		if (!(step > 0) && isatty(0))
-			step = ask_step(zmin, zmax);
-		if (!(step > 0))
-			step = plot_nice_step(zmin, zmax, 10);
-		c.nlevels = make_levels(zmin, zmax, step, &c.levels);
+		*stk = fmt_stack_read(o->input);
+		g = (*stk)->plane[0];
+		if ((*stk)->is_stack && o->ex)
+			die("%s: -ex writes the mesh of a single image, not of an image "
+			    "stack", o->input);
 	}
+	/* one set of levels for every plane, so that pages compare */
+	for (int pl = 0; pl < (*stk ? (*stk)->n : 1); pl++) {
+		const struct contour *gp = *stk ? (*stk)->plane[pl] : g;
+		size_t n = (size_t)gp->nx * gp->ny;
+		for (size_t k = 0; k < n; k++) {
+			*zmin = fmin(*zmin, gp->z[k]);
+			*zmax = fmax(*zmax, gp->z[k]);
+		}
+	}
+	if (o->ex)
+		write_mesh(g, o->input);
+	return g;
+}
 
-	/* the curves, page by page */
-	c.npages = pf ? pf->nsets : stk ? stk->n : 1;
-	c.pages = xcalloc((size_t)c.npages, sizeof *c.pages);
-	const struct contour *g_top = g;
+/* The contour curves of every level, page by page: a page per plane of
+ * an image stack (titled by its depth), per set of a -3D file, else one.
+ * join: "high" or "low" joins the curves along the border (join_grid). */
+static void make_pages(struct ctx *c, const struct contour *g, const struct image_stack *stk,
+		       const struct plot_file *pf, const char *join, double zmin, double zmax)
+{
+	c->npages = pf ? pf->nsets : stk ? stk->n : 1;
+	c->pages = xcalloc((size_t)c->npages, sizeof *c->pages);
 	struct segs sg = {NULL, 0, 0};
-	for (int pi = 0; pi < c.npages; pi++) {
-		struct page *pg = &c.pages[pi];
+	for (int pi = 0; pi < c->npages; pi++) {
+		struct page *pg = &c->pages[pi];
 		size_t cap = 0;
 		double *xs = NULL, *ys = NULL, *zz = NULL;
-		const struct contour *gp = stk ? stk->plane[pi] : g_top;
+		const struct contour *gp = stk ? stk->plane[pi] : g;
 		if (stk && stk->is_stack) {
 			char dbuf[NUM_BUFSZ];
-			const char *tl = c.s.toplabel ? c.s.toplabel : "";
+			const char *tl = c->s.toplabel ? c->s.toplabel : "";
 			pg->label = xmalloc(strlen(tl) + NUM_BUFSZ + 32);
 			sprintf(pg->label, "%s%sdepth %s um", tl, *tl ? ", " : "",
 				num_fmt(dbuf, stk->depth[pi]));
@@ -588,14 +550,14 @@ int main(int argc, char **argv)
 		} else {
 			memcpy(pg->bounds, pf->sets[pi].bounds, 4 * sizeof *pg->bounds);
 		}
-		for (int l = 0; l < c.nlevels; l++) {
+		for (int l = 0; l < c->nlevels; l++) {
 			sg.n = 0;
 			if (gp)
 				grid_segments(zz ? zz : gp->z, xs, ys, gp->nx + (zz ? 2 : 0),
-					      gp->ny + (zz ? 2 : 0), c.levels[l], &sg);
+					      gp->ny + (zz ? 2 : 0), c->levels[l], &sg);
 			else
 				for (int ci = 0; ci < pf->sets[pi].ncurves; ci++)
-					tri_segments(pf->sets[pi].curves[ci].p, c.levels[l], &sg);
+					tri_segments(pf->sets[pi].curves[ci].p, c->levels[l], &sg);
 			chain(&sg, l, pg, &cap);
 		}
 		free(xs);
@@ -603,20 +565,76 @@ int main(int argc, char **argv)
 		free(zz);
 	}
 	free(sg.s);
+}
+
+/* image.cont: the single level of -c in the 2D plot format, its curves
+ * in the input's x-y plane (its title, x and y labels). */
+static void write_image_cont(const struct ctx *c, const struct plot_labels *lab)
+{
+	struct plot_file *out = fmt_plot_new(2);
+	fmt_labels_set(&out->labels, lab->title, lab->axis[0], lab->axis[1], NULL);
+	for (int pi = 0; pi < c->npages; pi++) {
+		struct plot_set *st = fmt_plot_add_set(out, c->pages[pi].bounds);
+		for (int i = 0; i < c->pages[pi].ncurves; i++)
+			fmt_plot_add_curve(out, st, c->pages[pi].c[i].npts, c->pages[pi].c[i].xy);
+	}
+	fmt_plot_write("image.cont", out);
+	fmt_plot_free(out);
+}
+
+int main(int argc, char **argv)
+{
+	struct options o;
+	parse_options(argc, argv, &o);
+	struct ctx c;
+	memset(&c, 0, sizeof c);
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	plot_begin(&c.s, &(struct plot_settings){
+		.toplabel = "CONTOUR PLOT", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
+		.equalscale = 1, .postscript = 1, .line = 1, .scale = 1.0,
+		.xticks = 4, .yticks = 4,
+	}, spec, val, &o.cmd);
+	const struct opt_value *v;
+	c.contlabel = (v = plot_opt(spec, val, "contlabel")) ? (int)v->num : 1;
+	if (o.nolabel)
+		c.contlabel = 0;
+	c.linetypes = (v = plot_opt(spec, val, "linetypes")) ? (int)v->num : 2;
+	if (o.grid)
+		c.s.grid = 1;
+	const char *join = o.join;
+	if (!join && (v = plot_opt(spec, val, "joinlevel")))
+		join = v->str;
+	double step = o.has_cstep ? o.cstep : 0;
+	if (!o.has_cstep && (v = plot_opt(spec, val, "cstep")) && v->num > 0)
+		step = v->num;
+
+	struct contour *g = NULL;
+	struct image_stack *stk = NULL; /* an image stack: one page per plane */
+	struct plot_file *pf = NULL;
+	double zmin = INFINITY, zmax = -INFINITY;
+	if (o.tri)
+		pf = read_triangles(o.input, &zmin, &zmax);
+	else
+		g = read_grid(&o, &stk, &zmin, &zmax);
+
+	/* the labels the input carries are the defaults (contour.5) */
+	const struct plot_labels *lab = pf ? &pf->labels : &g->labels;
+	plot_settings_labels(&c.s, lab, spec, val, &o.cmd);
 
 	if (o.has_level) {
-		/* image.cont: the single level in the 2D plot format */
-		struct plot_file *out = fmt_plot_new(2);
-		/* its curves lie in the input's x-y plane: its title, x and y */
-		fmt_labels_set(&out->labels, lab->title, lab->axis[0], lab->axis[1], NULL);
-		for (int pi = 0; pi < c.npages; pi++) {
-			struct plot_set *st = fmt_plot_add_set(out, c.pages[pi].bounds);
-			for (int i = 0; i < c.pages[pi].ncurves; i++)
-				fmt_plot_add_curve(out, st, c.pages[pi].c[i].npts, c.pages[pi].c[i].xy);
-		}
-		fmt_plot_write("image.cont", out);
-		fmt_plot_free(out);
+		c.levels = xmalloc(sizeof *c.levels);
+		c.levels[0] = o.level;
+		c.nlevels = 1;
+	} else {
+		if (!(step > 0) && isatty(0))
+			step = ask_step(zmin, zmax);
+		if (!(step > 0))
+			step = plot_nice_step(zmin, zmax, 10);
+		c.nlevels = make_levels(zmin, zmax, step, &c.levels);
 	}
+	make_pages(&c, g, stk, pf, join, zmin, zmax);
+	if (o.has_level)
+		write_image_cont(&c, lab);
 
 	plot_output(&c.s, &o.cmd, render, NULL, &c);
 

@@ -30,11 +30,7 @@ static const char usage_head[] =
 	"  -lbl             label each feature (number, transmission, phase)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
-	PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_ONOFF("postscript"),
-	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"), PLOT_OPT_ONOFF("landscape"),
-	PLOT_OPT_SCALE, PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
-	PLOT_OPT_ONOFF("nolabel"),
+	PLOT_OPT_COMMON, PLOT_OPT_ONOFF("landscape"), PLOT_OPT_ONOFF("nolabel"),
 	{NULL, 0, 0, 0, NULL}
 };
 
@@ -235,18 +231,14 @@ int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
-	struct opt_value val[sizeof spec / sizeof spec[0]];
-	memset(val, 0, sizeof val);
-	if (o.cmd.optfile)
-		fmt_options_read(o.cmd.optfile, spec, val);
 	struct ctx c;
 	memset(&c, 0, sizeof c);
-	c.s = (struct plot_settings){
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	plot_begin(&c.s, &(struct plot_settings){
 		.toplabel = "2D Mask", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
 		.equalscale = 1, .postscript = 1, .line = 1, .scale = 1.0,
 		.xticks = 4, .yticks = 4,
-	};
-	plot_settings_resolve(&c.s, spec, val, &o.cmd);
+	}, spec, val, &o.cmd);
 	const struct opt_value *v = plot_opt(spec, val, "nolabel");
 	c.labels = o.lbl || (v && !v->num);
 

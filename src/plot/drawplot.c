@@ -44,14 +44,9 @@ static const char usage_head[] =
 
 /* The options-file keywords of the guide, with its ranges. */
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"),
-	PLOT_OPT_ONOFF("autorange"), PLOT_OPT_ONOFF("clip"), PLOT_OPT_ONOFF("equalscale"),
-	PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_ONOFF("postscript"),
-	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"), PLOT_OPT_ONOFF("line"),
-	PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"),
-	PLOT_OPT_ONOFF("markerchange"), PLOT_OPT_ONOFF("landscape"),
-	PLOT_OPT_ONOFF("xlog"), PLOT_OPT_ONOFF("ylog"), PLOT_OPT_SCALE,
-	PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
+	PLOT_OPT_COMMON, PLOT_OPT_LINES, PLOT_OPT_ONOFF("autorange"), PLOT_OPT_ONOFF("clip"),
+	PLOT_OPT_ONOFF("grid"), PLOT_OPT_ONOFF("landscape"), PLOT_OPT_ONOFF("xlog"),
+	PLOT_OPT_ONOFF("ylog"),
 	{"sleeptime", OPT_INT, 1, 20, NULL},    /* SunView only: accepted, unused */
 	PLOT_OPT_STR("templatefile"),
 	{NULL, 0, 0, 0, NULL}
@@ -334,19 +329,14 @@ int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
-	struct opt_value val[sizeof spec / sizeof spec[0]];
-	memset(val, 0, sizeof val);
-	if (o.cmd.optfile)
-		fmt_options_read(o.cmd.optfile, spec, val);
-
 	struct ctx c;
 	memset(&c, 0, sizeof c);
-	c.s = (struct plot_settings){
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	plot_begin(&c.s, &(struct plot_settings){
 		.toplabel = "X-Y LINE PLOT", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
 		.equalscale = 0, .postscript = 1, .line = 1, .scale = 1.0,
 		.xticks = 4, .yticks = 4,
-	};
-	plot_settings_resolve(&c.s, spec, val, &o.cmd);
+	}, spec, val, &o.cmd);
 	const struct opt_value *v;
 	c.autorange = (v = plot_opt(spec, val, "autorange")) ? (int)v->num : 1;
 	if (o.noauto || c.s.ticks_set)  /* the guide: ticks in the file turn it off */

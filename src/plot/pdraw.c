@@ -8,21 +8,17 @@
  * and right = up x w.  Every set of every file is one page.
  *
  * Hidden lines (-h): the closed curves are polygons, filled white and
- * outlined, drawn back to front.  A plain depth sort fails for polygons
- * that overlap in depth, so the order comes from a BSP partition (Fuchs,
- * Kedem and Naylor 1980): a polygon's plane splits the others into the
- * pieces behind it and in front of it, recursively, and the pieces are
- * painted far side first.  Split pieces are filled without an outline and
- * only the parts of the original edges are stroked, so no split seam
- * shows.  Open curves take part as segments that are split but never
- * split others.  The partition runs on an explicit stack, so a deep
- * partition cannot overflow the C stack.
+ * outlined, drawn back to front in the order of a BSP partition
+ * (plot_bsp.c); open curves take part as segments.  Split pieces are
+ * filled without an outline and only the parts of the original edges are
+ * stroked, so no split seam shows.
  */
 #include "args.h"
 #include "draw.h"
 #include "fmt_options.h"
 #include "fmt_plot.h"
 #include "num.h"
+#include "plot_bsp.h"
 #include "plot_common.h"
 #include "util.h"
 #include "vec3.h"
@@ -56,13 +52,8 @@ static const char usage_head[] =
 	"  q quit (the final view is written to the PostScript file)\n";
 
 static const struct opt_spec spec[] = {
-	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("zlabel"),
-	PLOT_OPT_STR("toplabel"), PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("postscript"),
-	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_STR("printer"),
-	PLOT_OPT_ONOFF("line"), PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"),
-	PLOT_OPT_ONOFF("markerchange"), PLOT_OPT_ONOFF("hiddenline"), PLOT_OPT_ONOFF("nosort"),
-	PLOT_OPT_SCALE, PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks"),
-	PLOT_OPT_TICKS("zticks"),
+	PLOT_OPT_COMMON, PLOT_OPT_LINES, PLOT_OPT_STR("zlabel"), PLOT_OPT_TICKS("zticks"),
+	PLOT_OPT_ONOFF("hiddenline"), PLOT_OPT_ONOFF("nosort"),
 	{NULL, 0, 0, 0, NULL}
 };
 
@@ -81,10 +72,6 @@ static const double DEFAULT_VIEW[3] = {-1, -2, 1.5};
 #define FONT_LABEL 12.0
 #define FONT_TOP 16.0
 #define MARKER_SIZE 5.0
-/* Plane-side tolerance, relative to the scene size (unit box): points this
- * close to a plane are on it. */
-#define PLANE_EPS 1e-9
-
 struct options {
 	struct plot_cmd cmd;
 	double v[3];
@@ -418,251 +405,6 @@ static void axes(struct draw *d, const struct view *vw, const double *box, const
 	}
 }
 
-/* ---- hidden lines: BSP painter ---- */
-
-struct frag {
-	int n;              /* vertices (2 for a segment) */
-	int curve;          /* the curve it comes from (its line style) */
-	unsigned char seg;  /* an open-curve segment: never a splitter */
-	unsigned char hasplane;
-	double gray;        /* fill: 1 white (the surface), less for walls */
-	double pl[4];       /* plane n.p + d = 0, |n| = 1 (view coordinates) */
-	unsigned char *orig;/* edge i (i -> i+1) is part of an original edge */
-	double p[];         /* 3n view coordinates; orig follows them */
-};
-
-/* One allocation a fragment (a triangle is 144 bytes, not three blocks):
- * the painter holds every polygon of a page at once. */
-static struct frag *frag_new(int n, int curve, int seg)
-{
-	size_t np = (size_t)n * 3 * sizeof(double);
-	struct frag *f = xmalloc(sizeof *f + np + (size_t)n);
-	f->n = n;
-	f->curve = curve;
-	f->seg = (unsigned char)seg;
-	f->hasplane = 0;
-	f->gray = 1.0;
-	memset(f->pl, 0, sizeof f->pl);
-	f->orig = (unsigned char *)f->p + np;
-	memset(f->orig, 0, (size_t)n);
-	return f;
-}
-
-static void frag_free(struct frag *f)
-{
-	free(f);
-}
-
-/* Newell's normal: robust for any planar polygon. */
-static void frag_plane(struct frag *f)
-{
-	double n[3] = {0, 0, 0}, c[3] = {0, 0, 0};
-	for (int i = 0; i < f->n; i++) {
-		const double *a = f->p + 3 * i, *b = f->p + 3 * ((i + 1) % f->n);
-		n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-		n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-		n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-		for (int k = 0; k < 3; k++)
-			c[k] += a[k] / f->n;
-	}
-	double len = sqrt(vec3_dot(n, n));
-	f->hasplane = !f->seg && len > 1e-12;
-	if (f->hasplane) {
-		for (int k = 0; k < 3; k++)
-			f->pl[k] = n[k] / len;
-		f->pl[3] = -vec3_dot(f->pl, c);
-	}
-}
-
-static int side(const double *pl, const double *p)
-{
-	double s = vec3_dot(pl, p) + pl[3];
-	return s > PLANE_EPS ? 1 : s < -PLANE_EPS ? -1 : 0;
-}
-
-/* The part of f on side sg (+1 or -1) of pl, or NULL if it is empty. */
-static struct frag *clip_part(const struct frag *f, const double *pl, const int *sd, int sg)
-{
-	int cap = f->n * 2 + 2, m = 0;
-	struct frag *o = frag_new(cap, f->curve, f->seg);
-	o->gray = f->gray;
-	int nedge = f->seg ? 1 : f->n;
-	for (int i = 0; i < nedge; i++) {
-		int j = (i + 1) % f->n;
-		const double *a = f->p + 3 * i, *b = f->p + 3 * j;
-		int ina = sg * sd[i] >= 0, inb = sg * sd[j] >= 0;
-		int opposite = sd[i] * sd[j] < 0;
-		if (ina) {
-			memcpy(o->p + 3 * m, a, 3 * sizeof *a);
-			o->orig[m++] = (inb || opposite) ? f->orig[i] : 0;
-		}
-		if (opposite) {
-			double sa = vec3_dot(pl, a) + pl[3], sb = vec3_dot(pl, b) + pl[3];
-			double t = sa / (sa - sb);
-			for (int k = 0; k < 3; k++)
-				o->p[3 * m + k] = a[k] + t * (b[k] - a[k]);
-			o->orig[m++] = inb ? f->orig[i] : 0;
-		}
-	}
-	if (f->seg && sg * sd[1] >= 0) {    /* a segment's far end */
-		memcpy(o->p + 3 * m, f->p + 3, 3 * sizeof *f->p);
-		o->orig[m++] = 0;
-	}
-	o->n = m;
-	if (m < (f->seg ? 2 : 3)) {
-		frag_free(o);
-		return NULL;
-	}
-	o->hasplane = f->hasplane;
-	memcpy(o->pl, f->pl, sizeof o->pl);
-	return o;
-}
-
-struct list { struct frag **f; size_t n, cap; };
-
-static void list_reserve(struct list *l, size_t n)
-{
-	if (n) {
-		l->f = xreallocarray(NULL, n, sizeof *l->f);
-		l->cap = n;
-	}
-}
-
-static void list_add(struct list *l, struct frag *f)
-{
-	xgrow(&l->f, &l->cap, l->n + 1, sizeof *l->f);
-	l->f[l->n++] = f;
-}
-
-/* Work of the painter: a list to partition, or fragments to paint. */
-struct work { int paint; struct list l; };
-
-static int count_splits(const struct frag *s, struct frag *const *f, size_t n)
-{
-	int splits = 0;
-	size_t step = n > 64 ? n / 64 : 1;
-	for (size_t i = 0; i < n; i += step) {
-		int pos = 0, neg = 0;
-		for (int k = 0; k < f[i]->n; k++) {
-			int v = side(s->pl, f[i]->p + 3 * k);
-			pos |= v > 0, neg |= v < 0;
-		}
-		splits += pos && neg;
-	}
-	return splits;
-}
-
-/* The splitter: of a few candidates spread over the list, the one that
- * splits the fewest of a sample (fewer pieces, same picture).  A
- * candidate met twice (short lists) is counted once, a lone candidate not
- * at all, and none can beat one that splits nothing: the choice is the
- * same, most nodes of the partition being short lists. */
-static long choose(struct frag *const *f, size_t n)
-{
-	size_t cand[5];
-	int nc = 0;
-	for (int c = 0; c < 5; c++) {
-		size_t i = n * (size_t)c / 5;
-		while (i < n && !f[i]->hasplane)
-			i++;
-		if (i >= n)
-			continue;
-		if (nc && cand[nc - 1] == i)
-			continue;       /* candidates only grow: a repeat is the last */
-		cand[nc++] = i;
-	}
-	if (nc <= 1)
-		return nc ? (long)cand[0] : -1;
-	long best = -1;
-	int bests = 0;
-	for (int c = 0; c < nc && !(best >= 0 && bests == 0); c++) {
-		int s = count_splits(f[cand[c]], f, n);
-		if (best < 0 || s < bests)
-			best = (long)cand[c], bests = s;
-	}
-	return best;
-}
-
-typedef void (*paint_fn)(struct draw *d, const struct view *vw, const struct ctx *c,
-			 const struct frag *f);
-
-static void painter(struct draw *d, const struct view *vw, const struct ctx *c,
-		    struct list all, paint_fn paint)
-{
-	struct work *stack = NULL;
-	size_t ns = 0, cap = 0;
-	unsigned char *cls = NULL;      /* a list's sides of the splitter */
-	size_t clscap = 0;
-	xgrow(&stack, &cap, 1, sizeof *stack);
-	stack[ns++] = (struct work){0, all};
-	while (ns > 0) {
-		struct work w = stack[--ns];
-		long si = w.paint ? -1 : choose(w.l.f, w.l.n);
-		if (si < 0) {
-			/* nothing left to split by: paint (segments only, or the
-			 * polygons of one plane in file order) */
-			for (size_t i = 0; i < w.l.n; i++) {
-				paint(d, vw, c, w.l.f[i]);
-				frag_free(w.l.f[i]);
-			}
-			free(w.l.f);
-			continue;
-		}
-		const struct frag *s = w.l.f[si];
-		struct list pos = {0}, neg = {0}, co = {0};
-		int *sd = NULL;
-		size_t sdcap = 0;
-		/* sides first, so that the lists are allocated once at their
-		 * size (0 on the plane, 1 in front, 2 behind, 3 split) */
-		xgrow(&cls, &clscap, w.l.n, 1);
-		size_t count[4] = {0, 0, 0, 0};
-		for (size_t i = 0; i < w.l.n; i++) {
-			const struct frag *f = w.l.f[i];
-			int p = 0, q = 0;
-			if ((long)i != si)
-				for (int k = 0; k < f->n; k++) {
-					int v = side(s->pl, f->p + 3 * k);
-					p |= v > 0, q |= v < 0;
-				}
-			cls[i] = (unsigned char)(p | q << 1);
-			count[cls[i]]++;
-		}
-		list_reserve(&co, count[0]);
-		list_reserve(&pos, count[1] + count[3]);
-		list_reserve(&neg, count[2] + count[3]);
-		for (size_t i = 0; i < w.l.n; i++) {
-			struct frag *f = w.l.f[i];
-			if (cls[i] == 0)
-				list_add(&co, f);
-			else if (cls[i] == 1)
-				list_add(&pos, f);
-			else if (cls[i] == 2)
-				list_add(&neg, f);
-			else {
-				xgrow(&sd, &sdcap, (size_t)f->n, sizeof *sd);
-				for (int k = 0; k < f->n; k++)
-					sd[k] = side(s->pl, f->p + 3 * k);
-				struct frag *a = clip_part(f, s->pl, sd, 1);
-				struct frag *b = clip_part(f, s->pl, sd, -1);
-				if (a) list_add(&pos, a);
-				if (b) list_add(&neg, b);
-				frag_free(f);
-			}
-		}
-		free(sd);
-		free(w.l.f);
-		/* the eye is on the + side when the normal points to it (D up) */
-		int eye_pos = s->pl[2] >= 0;
-		struct list nearl = eye_pos ? pos : neg, farl = eye_pos ? neg : pos;
-		xgrow(&stack, &cap, ns + 3, sizeof *stack);
-		stack[ns++] = (struct work){0, nearl};
-		stack[ns++] = (struct work){1, co};
-		stack[ns++] = (struct work){0, farl};
-	}
-	free(stack);
-	free(cls);
-}
-
 /* ---- drawing ---- */
 
 static int curve_linetype(const struct ctx *c, int i)
@@ -685,9 +427,20 @@ static int is_polygon(const struct plot_curve *cv)
 	return cv->npts >= 4 && memcmp(cv->p, cv->p + 3 * (cv->npts - 1), 3 * sizeof *cv->p) == 0;
 }
 
-static void paint_frag(struct draw *d, const struct view *vw, const struct ctx *c,
-		       const struct frag *f)
+/* What paint_frag draws with: the page, its view and the settings. */
+struct paint_ctx {
+	struct draw *d;
+	const struct view *vw;
+	const struct ctx *c;
+};
+
+/* A fragment as the painter hands it over (plot_bsp_paint), far ones first. */
+static void paint_frag(void *pctx, const struct plot_frag *f)
 {
+	const struct paint_ctx *pc = pctx;
+	struct draw *d = pc->d;
+	const struct view *vw = pc->vw;
+	const struct ctx *c = pc->c;
 	double *xy = xreallocarray(NULL, (size_t)f->n + 1, 2 * sizeof *xy);
 	for (int i = 0; i < f->n; i++) {
 		xy[2 * i] = vw->a * f->p[3 * i] + vw->bx;
@@ -758,7 +511,7 @@ static int on_side(const double *p, const double *box, int k)
 	return 0;
 }
 
-static void add_walls(struct list *all, const struct view *vw, const double *box,
+static void add_walls(struct plot_frag_list *all, const struct view *vw, const double *box,
 		      const struct plot_curve *cv, int curve)
 {
 	for (int e = 0; e + 1 < cv->npts; e++) {
@@ -771,15 +524,15 @@ static void add_walls(struct list *all, const struct view *vw, const double *box
 				continue;       /* on the floor: no wall */
 			double q[4][3] = {{a[0], a[1], a[2]}, {b[0], b[1], b[2]},
 					  {b[0], b[1], box[4]}, {a[0], a[1], box[4]}};
-			struct frag *f = frag_new(4, curve, 0);
+			struct plot_frag *f = plot_frag_new(4, curve, 0);
 			f->gray = WALL_GRAY;
 			for (int j = 0; j < 4; j++)
 				to_view(vw, q[j], f->p + 3 * j);
 			f->orig[2] = 1;         /* the floor edge */
 			f->orig[1] = on_side(b, box, 1 - k) != 0;   /* a box corner */
 			f->orig[3] = on_side(a, box, 1 - k) != 0;
-			frag_plane(f);
-			list_add(all, f);
+			plot_frag_plane(f);
+			plot_frag_list_add(all, f);
 		}
 	}
 }
@@ -788,7 +541,7 @@ static void add_walls(struct list *all, const struct view *vw, const double *box
  * upper left behind the eye), in view coordinates, so the shading follows
  * the picture as drawn (z stretched or not). */
 #define SHADE_AMBIENT 0.3
-static double shade(const struct frag *f)
+static double shade(const struct plot_frag *f)
 {
 	static const double light[3] = {-0.42, 0.56, 0.71};   /* unit length */
 	if (!f->hasplane)
@@ -803,34 +556,34 @@ static double shade(const struct frag *f)
 static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx *c,
 			const struct plot_set *st, const double *box)
 {
-	struct list all = {0};
+	struct plot_frag_list all = {0};
 	for (int i = 0; i < st->ncurves; i++) {
 		const struct plot_curve *cv = &st->curves[i];
 		if (is_polygon(cv)) {
-			struct frag *f = frag_new(cv->npts - 1, i, 0);
+			struct plot_frag *f = plot_frag_new(cv->npts - 1, i, 0);
 			for (int k = 0; k + 1 < cv->npts; k++) {
 				to_view(vw, cv->p + 3 * k, f->p + 3 * k);
 				f->orig[k] = 1;
 			}
-			frag_plane(f);
+			plot_frag_plane(f);
 			if (c->shade) {
 				f->gray = shade(f);
 				memset(f->orig, 0, (size_t)f->n);
 			}
-			list_add(&all, f);
+			plot_frag_list_add(&all, f);
 			if (c->walls)
 				add_walls(&all, vw, box, cv, i);
 		} else {
 			for (int k = 0; k + 1 < cv->npts; k++) {
-				struct frag *f = frag_new(2, i, 1);
+				struct plot_frag *f = plot_frag_new(2, i, 1);
 				to_view(vw, cv->p + 3 * k, f->p);
 				to_view(vw, cv->p + 3 * k + 3, f->p + 3);
 				f->orig[0] = 1;
-				list_add(&all, f);
+				plot_frag_list_add(&all, f);
 			}
 		}
 	}
-	painter(d, vw, c, all, paint_frag);
+	plot_bsp_paint(all, paint_frag, &(struct paint_ctx){d, vw, c});
 }
 
 static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set *st,
@@ -938,18 +691,14 @@ int main(int argc, char **argv)
 {
 	struct options o;
 	parse_options(argc, argv, &o);
-	struct opt_value val[sizeof spec / sizeof spec[0]];
-	memset(val, 0, sizeof val);
-	if (o.cmd.optfile)
-		fmt_options_read(o.cmd.optfile, spec, val);
 	struct ctx c;
 	memset(&c, 0, sizeof c);
-	c.s = (struct plot_settings){
+	struct opt_value val[sizeof spec / sizeof spec[0]];
+	plot_begin(&c.s, &(struct plot_settings){
 		.toplabel = "3D Line Plot", .xlabel = "X-Axis", .ylabel = "Y-Axis",
 		.zlabel = "Z-Axis", .equalscale = 1, .postscript = 1, .line = 1,
 		.scale = 1.0, .xticks = 2, .yticks = 2, .zticks = 2,
-	};
-	plot_settings_resolve(&c.s, spec, val, &o.cmd);
+	}, spec, val, &o.cmd);
 	const struct opt_value *v;
 	c.hidden = o.hidden || ((v = plot_opt(spec, val, "hiddenline")) && v->num);
 	c.nosort = o.nosort || ((v = plot_opt(spec, val, "nosort")) && v->num);

@@ -151,8 +151,8 @@ static void take_int(const struct opt_spec *sp, const struct opt_value *v,
 		*dst = (int)o->num;
 }
 
-void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
-			   const struct opt_value *val, const struct plot_cmd *c)
+static void settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
+			     const struct opt_value *val, const struct plot_cmd *c)
 {
 	const struct opt_value *o;
 	if (spec && val) {
@@ -194,6 +194,19 @@ void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
 		s->postscript = 0;
 	s->svg = c->svg;
 	s->psfile = c->psfile ? c->psfile : PLOT_PS_FILE;
+}
+
+void plot_begin(struct plot_settings *s, const struct plot_settings *defaults,
+		const struct opt_spec *spec, struct opt_value *val, const struct plot_cmd *c)
+{
+	size_t n = 0;
+	while (spec[n].key)
+		n++;
+	memset(val, 0, (n + 1) * sizeof *val);
+	if (c->optfile)
+		fmt_options_read(c->optfile, spec, val);
+	*s = *defaults;
+	settings_resolve(s, spec, val, c);
 }
 
 /* lpr -Pprinter dataplot.ps; a missing lpr is an error, not a crash. */

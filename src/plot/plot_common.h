@@ -63,18 +63,32 @@ extern const char plot_usage_x[];
 #define PLOT_OPT_ONOFF(k)   {k, OPT_ONOFF, 0, 0, NULL}
 #define PLOT_OPT_SCALE      {"scale", OPT_NUM, 0.1, 1.0, NULL}
 #define PLOT_OPT_TICKS(k)   {k, OPT_INT, 1, 20, NULL}
+/* The keywords every plot program takes (read by plot_begin); a program's
+ * table lists them first, then its own.  The order of a table does not
+ * matter: entries are found by key. */
+#define PLOT_OPT_COMMON \
+	PLOT_OPT_STR("xlabel"), PLOT_OPT_STR("ylabel"), PLOT_OPT_STR("toplabel"), \
+	PLOT_OPT_ONOFF("equalscale"), PLOT_OPT_ONOFF("noplot"), PLOT_OPT_ONOFF("postscript"), \
+	PLOT_OPT_ONOFF("printplot"), PLOT_OPT_STR("printer"), PLOT_OPT_SCALE, \
+	PLOT_OPT_TICKS("xticks"), PLOT_OPT_TICKS("yticks")
+/* The line and marker keywords of the programs that draw plot curves. */
+#define PLOT_OPT_LINES \
+	PLOT_OPT_ONOFF("line"), PLOT_OPT_ONOFF("linechange"), PLOT_OPT_ONOFF("marker"), \
+	PLOT_OPT_ONOFF("markerchange")
 
 /* The value of key if the file set it, else NULL. */
 const struct opt_value *plot_opt(const struct opt_spec *spec,
 				 const struct opt_value *val, const char *key);
-/* Fills s from its defaults (set by the caller), the options-file values
- * of the common keywords, and the command line. */
-void plot_settings_resolve(struct plot_settings *s, const struct opt_spec *spec,
-			   const struct opt_value *val, const struct plot_cmd *c);
+/* The start every plot program shares: val (one entry per entry of spec,
+ * its terminator included) cleared and filled from the options-file of
+ * -o if given, then s set from defaults, the options-file values of the
+ * common keywords, and the command line. */
+void plot_begin(struct plot_settings *s, const struct plot_settings *defaults,
+		const struct opt_spec *spec, struct opt_value *val, const struct plot_cmd *c);
 
 /* The labels an input file carries (fmt_labels.h) replace the built-in
  * defaults: a label the options-file or the command line sets wins, an
- * empty one in l changes nothing.  Call after plot_settings_resolve; l
+ * empty one in l changes nothing.  Call after plot_begin; l
  * must outlive s. */
 void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
 			  const struct opt_spec *spec, const struct opt_value *val,

@@ -1,6 +1,6 @@
 /*
  * abbe.c - the image by Abbe's method: a sum over source points of
- * coherent images (issue 15), whose cost grows as the window's area
+ * coherent images, whose cost grows as the window's area
  * times its logarithm where the Hopkins pair sum (tcc.c) grows as the
  * area squared.
  *

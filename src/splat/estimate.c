@@ -31,7 +31,7 @@
  * written (measured, see above) */
 static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 1e-6;
 /* per row of a flat pupil's source integral (the row's sine and cosine
- * precomputed: issue 15) */
+ * precomputed) */
 static const double T_ROW = 1.3e-8;
 
 /* Abbe (abbe.c): per source cell and plane, one pass over the orders, a

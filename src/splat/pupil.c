@@ -15,7 +15,7 @@
  * largest optical path difference at the pupil edge for a field point
  * ("coma 0.4 lambda at (1,0)"), which is w here.
  *
- * Inside the resist (splat(5)'s resist statement, issue 11) a plane wave
+ * Inside the resist (splat(5)'s resist statement) a plane wave
  * of pupil frequency g travels at sin(theta) = lambda |g| / n, so at depth
  * z below the top it has gained, relative to the axial wave,
  *   W_z = (z / lambda) (sqrt(n^2 - lambda^2 |g|^2) - n)   waves,

@@ -112,7 +112,8 @@ void source_disc3_planes(const struct pupil *p, const struct quad *q,
 			 double complex *sum, double complex *row);
 
 /* The image spectrum: A[(dn + 2 nmax) * (4 mmax + 1) + dm + 2 mmax],
- * one such array per plane of an image stack, top plane first. */
+ * one such array per plane of an image stack, top plane first.  Made by
+ * tcc.c or abbe.c; spectrum.c allocates it, compute.c runs either. */
 struct spectrum {
 	double lx, ly;
 	int mmax, nmax;         /* |dm| <= 2 mmax, |dn| <= 2 nmax */

@@ -1,7 +1,7 @@
 #!/bin/sh
 # tests/bench/bleach.sh [BUILD] - time and peak memory of bleach on the
 # 1.25 um contact of thesis Figures 8.14-8.18 (51 x 51 x 300, Olin Hunt
-# 6512 on Si) with a 3D bake (issue "bleach", Performance: the thesis
+# 6512 on Si) with a 3D bake (the thesis
 # needed 8 MB for 50 x 50 x 300; aim for under 0.2 s and 50 MB).  The
 # aerial image is examples/contact/image.cont when splat has made it,
 # otherwise a stand-in contact (a Gaussian spot of the same size on the
@@ -43,7 +43,7 @@ if [ -x /usr/bin/time ]; then
 	run "contact 51x51x300, bake in z" "$img" "$TOP/examples/contact/resist.in"
 	run "contact 51x51x300, no bake" "$img" "$TOP/examples/contact/resist-nobake.in"
 	run "contact 51x51x300, bake3d, -solid" -solid "$img" resist3d.in
-	# issue 14's legal large grid: 2^26 points (the contact resampled to
+	# a large grid within the limits: 2^26 points (the contact resampled to
 	# 2048 x 2048, nz 16) with a 3D bake; 228 s and 1.1 GB before the
 	# recursive bake and the streamed rate array, aim 10 s and 1 GB
 	sed 's/^grid .*/grid nx 2048 ny 2048 nz 16/' resist3d.in >big.in

@@ -1,7 +1,7 @@
 #!/bin/sh
 # tests/bench/car.sh [BUILD] - time and peak memory of bleach with the
-# chemically amplified positive resist's reaction-diffusion bake (issue
-# 18, Performance: a 5 x 5 um window, 100 x 100 x 200 points, a 60 s
+# chemically amplified positive resist's reaction-diffusion bake (aim:
+# a 5 x 5 um window, 100 x 100 x 200 points, a 60 s
 # bake, under 10 s on one core).  The image is a stand-in array of
 # contact holes (0.25 um holes on a 0.5 um pitch, 10 x 10 in the window);
 # the resist is examples/car-krf-lines' 0.30 um thick on 200 points (1.5 nm,

@@ -1,6 +1,6 @@
 #!/bin/sh
-# tests/bench/deloop.sh [BUILD] - time of etch -deloop (issue "deloop",
-# Performance; issue 15: under 5 s at 1e6 triangles): two spheres grown
+# tests/bench/deloop.sh [BUILD] - time of etch -deloop (aim:
+# under 5 s at 1e6 triangles): two spheres grown
 # from seeds (0,0,0) and (0,1,0) at 1 um/s (thesis Figure 8.13), delooped
 # at 0.8 s and 1.0 s, with S_ideal 0.1, 0.032 and 0.01 um: meshes of
 # about 1e4, 1e5 and 1e6 triangles (the final count; the mesh before the

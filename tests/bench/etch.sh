@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/bench/etch.sh [BUILD] - time, peak memory and final mesh size of
-# etch (issue "etch", Performance):
+# etch:
 #   - the seed-point sphere (uniform 1 um/s, 1 s, thesis Figure 8.3);
 #   - R = exp(-4(x^2 + y^2))(1.05 - cos(8 pi z)) for 3 s (the function of
 #     thesis Figure 6.20), 51 x 51 x 300 over 2 x 2 x 2 um;

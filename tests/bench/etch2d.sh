@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/bench/etch2d.sh [BUILD] - the thesis' study of 2D etching
-# algorithms remade (issue 17; thesis chapters 3-7, Table 10.1):
+# algorithms remade (thesis chapters 3-7, Table 10.1):
 #   - Figure 3.3: Dill's cells etching uniformly (1 um/s, 1 s) from a seed
 #     at 25 to 400 cells/um: the radius along rays at 0, 22.5, 45, 67.5 and
 #     90 degrees from straight down (a perfect octagon: 1/cos 22.5 = 1.082

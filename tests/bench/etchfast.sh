@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/bench/etchfast.sh [BUILD] - issue 15's etch figures against the
+# tests/bench/etchfast.sh [BUILD] - etch's speed-ups against the
 # code before it, in the same run (the base revision BENCH_BASE, default
 # 8b1cf56 as tests/bench/speed.sh, exported with git archive and built in
 # a temporary directory; BENCH_BASE=none skips it):

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/bench/fmm-decimate.sh [BUILD] - issue 15's compact fast-marching
+# tests/bench/fmm-decimate.sh [BUILD] - the compact fast-marching
 # surfaces: examples/contact with bake and without (etch -et 60 -pt 20,
 # three sets), curves.plot bytes and triangles (all sets) of the
 # ray-string engine and of -method fmm as -dense (every cell), -tol 0

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/bench/fmm.sh [BUILD] - timings of etch's fast-marching engine
-# (issue "An independent engine": 51 x 51 x 300 and 128^3 grids; a plain
+# (on 51 x 51 x 300 and 128^3 grids; a plain
 # single-threaded C fast marching takes about 0.5 s for 100^3).  Drives
 # the solver through the bench mode of the fmm_exact unit test: a contact
 # hole in a resist with standing waves, solved from the resist top, then

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/bench/gds.sh [BUILD] - reading layouts (issue 16, aim under 2 s):
+# tests/bench/gds.sh [BUILD] - reading layouts (aim under 2 s):
 # a flat GDSII file of 1 million squares on layer 1 (plus 1 million decoys
 # on layer 2, 128 MB) of which 1 000 fall in the window, read by
 # `splat -name` (reads and flattens the input, clips to the window, no

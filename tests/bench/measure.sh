@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/bench/measure.sh [BUILD] - time and peak memory of measure on a
-# surface of about 1e6 triangles (issue 12, Performance: under 2 s).  The
+# surface of about 1e6 triangles (aim: under 2 s).  The
 # surface is a height field on a 708 x 708 grid over the contact's 5 um
 # cell: a cone hole (radius 0.3 um at the substrate, 0.6 um at the top)
 # in 0.7 um of resist whose top ripples by 1 nm, every coordinate printed

@@ -1,7 +1,7 @@
 #!/bin/sh
-# tests/bench/speed.sh [BUILD] - issue 15's speed-ups against the code
+# tests/bench/speed.sh [BUILD] - the speed-ups of etch, splat and bleach against the code
 # before them, measured in the same run: the base revision (BENCH_BASE,
-# default 8b1cf56, the tree before issue 15) is exported with git archive
+# default 8b1cf56, the tree before them) is exported with git archive
 # into a temporary directory and built there, then the same commands run
 # with the old and the new programs.  Figures are wall and CPU
 # (user + sys) seconds, best of 3, and peak resident memory; the ratio is

@@ -1,11 +1,11 @@
 #!/bin/sh
-# tests/bench/splat-large.sh [BUILD] - splat on large windows (issue 15):
+# tests/bench/splat-large.sh [BUILD] - splat on large windows:
 # a contact array of 1 um pitch (0.5 um dark-field contacts), i-line
 # 0.365 um, NA 0.6, sigma 0.5, a 0.05 um grid, at 5, 10, 20 and 40 um
 # windows: wall time, CPU time and peak memory of -method abbe and of
 # -method hopkins with their ratio (hopkins skipped above 20 um: minutes),
 # all cores (SAMPLE3D_THREADS, default every core); then the 40 um window
-# at NA 0.5 of the hardening issue (issue 14: within 10 s) with the
+# at NA 0.5 (aim: within 10 s) with the
 # default -method auto, and the 20 um window with 1 thread and with 2
 # threads (abbe).  Asserts nothing.
 set -u

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/bench/splat.sh [BUILD] - timings of splat (issue "Performance"):
+# tests/bench/splat.sh [BUILD] - timings of splat:
 # the 1.25 um contact of examples/contact (51 x 51; aim under 0.05 s) and
 # a 10 um x 10 um cell at 201 x 201 with sigma 0.5 (aim under 1 s), the
 # latter also with defocus and coma (the pupil phase then needs a row

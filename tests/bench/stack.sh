@@ -1,11 +1,11 @@
 #!/bin/sh
-# tests/bench/stack.sh [BUILD] - the cost of the image inside the resist
-# (issue 11): splat writing an 11-plane image stack against the single
+# tests/bench/stack.sh [BUILD] - the cost of the image inside the resist:
+# splat writing an 11-plane image stack against the single
 # image, for the 1.25 um contact of examples/contact (51 x 51, NA 0.28,
 # 0.7 um of resist of index 1.68) and the 10 um x 10 um cell of
 # tests/bench/splat.sh (201 x 201, sigma 0.5, also with defocus and coma);
 # and bleach on the contact from the stack against the single image, for
-# each bake (the issue's aim: within 1.5x).  Best of 3 samples of CPU
+# each bake (the aim: within 1.5x).  Best of 3 samples of CPU
 # time (the machine is shared), each of several runs for the short ones.
 # Asserts nothing.
 set -u

@@ -31,9 +31,8 @@ n8=$(check mxyz.solid.3D) || fail "mxyz.solid.3D: $n8"
 bleach -q -solid -m 0.3 spot.cont o.in || fail "bleach -m 0.3 failed"
 n3=$(check mxyz.solid.3D) || fail "mxyz.solid.3D at 0.3: $n3"
 [ "$n3" -lt "$n8" ] || fail "-m 0.3 gave $n3 triangles, -m 0.8 $n8"
-if [ -x "$BUILD/bin/pdraw" ]; then
-	pdraw -h -nosort -ps mxyz.solid.3D >solid.ps 2>pdraw.err </dev/null ||
-		fail "pdraw -h -nosort cannot draw mxyz.solid.3D: $(head -3 pdraw.err)"
-fi
+built pdraw
+pdraw -h -nosort -ps mxyz.solid.3D >solid.ps 2>pdraw.err </dev/null ||
+	fail "pdraw -h -nosort cannot draw mxyz.solid.3D: $(head -3 pdraw.err)"
 echo "M = 0.8: $n8 triangles, M = 0.3: $n3"
 exit 0

@@ -1,4 +1,4 @@
-# bleach with an image stack (stack(5), issue 11): the intensity at depth
+# bleach with an image stack (stack(5)): the intensity at depth
 # d of column (x, y) is the stack's image linearly interpolated in depth
 # between planes, times the standing-wave factor.  Checked against:
 #  - the closed form of a non-bleaching resist (A = 0) with standing

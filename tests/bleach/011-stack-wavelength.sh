@@ -1,6 +1,6 @@
 # The image stack records the wavelength it was computed at (stack(5)),
-# and bleach refuses a stack of another wavelength than its input's
-# (issue 14, item 10): the standing waves and the dose table are for
+# and bleach refuses a stack of another wavelength than its input's:
+# the standing waves and the dose table are for
 # bleach's own wavelength, so another one is another exposure.
 #  - splat writes "wavelength L" on the stack's header line;
 #  - the same wavelength runs silently; another is one line naming the

@@ -1,5 +1,5 @@
 # The size of bleach's grid is limited by its estimate, not by a fixed
-# cap (issue 14, issue 15): a grid beyond the machine's memory is refused
+# cap: a grid beyond the machine's memory is refused
 # before any work with one line naming the grid statement's line, the
 # number of rate points, the time and memory it would take, and the way
 # to run it anyway (-big, SAMPLE3D_BIG); nothing is written.  (The old

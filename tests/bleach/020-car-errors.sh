@@ -1,4 +1,4 @@
-# The car and peb statements (issue 18): a good input runs and round-trips
+# The car and peb statements of bleach(5): a good input runs and round-trips
 # its ARRHENIUS values; each malformed one gives one line naming the file
 # and line ("bleach: in.txt:N: ..."), exits 1 and leaves no rate file.
 . "$TOP/tests/lib/common.sh"

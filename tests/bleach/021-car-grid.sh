@@ -1,5 +1,5 @@
-# The CA bake on a coarse output grid (issue 18: m within 1e-3 of the
-# converged solution whatever the output grid): bleach refines z inside,
+# The CA bake on a coarse output grid (m within 1e-3 of
+# the converged solution whatever the output grid, as asked): bleach refines z inside,
 # so a 13-point grid's m matches a 49-point grid's at the 13 common nodes
 # within 1.5e-3 (each within 1e-3 of the converged m, bleach(1)); the
 # output is the same whatever the thread count.

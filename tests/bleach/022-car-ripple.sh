@@ -1,4 +1,4 @@
-# Issue 18: standing waves shrink in the developed wall as the acid
+# Standing waves shrink in the developed wall as the acid
 # diffuses further.  180 nm spaces at KrF in the CA resist of
 # examples/car-krf-lines on bare silicon (no anti-reflective layer, so
 # the standing waves are strong), baked with Dh = 3e-6, 1e-5, 3e-5 um2/s

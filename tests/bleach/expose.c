@@ -11,7 +11,7 @@
  *    Olin Hunt 6512 on Si: max |dM| below 1e-4 at doses that fall
  *    between table rows.
  * 3. Step convergence: halving the dose step changes M by less than 1e-4
- *    (the issue's requirement), Olin Hunt and Kodak 820 on oxide.
+ *    (the accuracy asked), Olin Hunt and Kodak 820 on oxide.
  * 4. M stays in (0, 1] and decreases with dose.
  * 5. The bake in z applied to the table's rows (what main.c does) equals
  *    the bake applied to each interpolated column, to 1e-12: smoothing

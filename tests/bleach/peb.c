@@ -1,6 +1,6 @@
 /*
  * peb.c - the reaction-diffusion bake of the chemically amplified positive
- * resist (src/bleach/peb.c, issue 18) and its rate models:
+ * resist (src/bleach/peb.c) and its rate models:
  *   - closed forms: q0 = 0, kloss = 0, p = 1, no diffusion gives
  *     m = exp(-kamp h0 t) (1e-12); with quenching and no diffusion h - q
  *     stays constant (1e-13) and h follows h(t) = d / (1 - (q0/h0)

@@ -14,7 +14,7 @@
 #     is one too.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o two.bin 31 41 31 -1.5 1.5 -1.5 2.5 -1.5 1.5 1 || fail "mkrate"
 set -- -et 1 -dt 0.1 -seg 0.1 -seed 0 0 0 -seed 0 1 0 -check
 etch "$@" -deloop 8 -o a.plot two.bin 2>a.err || fail "etch -deloop failed: $(tail -n 3 a.err)"

@@ -1,8 +1,8 @@
 #!/bin/sh
-# Delooping never deletes developed resist that belongs to the front
-# (issue 12): the unbaked contact of examples/contact (Figures 8.15-8.16,
+# Delooping never deletes developed resist that belongs to the front:
+# the unbaked contact of examples/contact (Figures 8.15-8.16,
 # standing waves), developed 60 s at the default settings, delooped at the
-# end and, with -pt 20, at 20, 40 and 60 s.  Before issue 12 -deloop
+# end and, with -pt 20, at 20, 40 and 60 s.  Before this was fixed -deloop
 # removed 398 "loops" (7179 triangles) and left no surface below
 # z = -0.136 um (the hole deleted) and 4.6 um of border open (17.5 um with
 # -pt 20): the 0.1 um segments could not follow the 0.13 um scallops, the

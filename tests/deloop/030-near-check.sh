@@ -1,4 +1,4 @@
-# Issue 15: after a deloop pass's first search, the next passes search
+# After a deloop pass's first search, the next passes search
 # only near what the pass changed (src/etch/deloop.c).  With -check every
 # such search is compared with a full search, bit for bit, and etch dies
 # on a difference.  Here: the unbaked contact (examples/contact), 60 s,

@@ -1,14 +1,14 @@
 #!/bin/sh
-# The README's walk through the contact runs as written, twice in a row
-# in one shell (issue finding 6: "mkdir /tmp/contact" failed the second
+# The walk through the contact (docs/walkthrough.md) runs as written, twice in a row
+# in one shell (once "mkdir /tmp/contact" failed the second
 # time and $OLDPWD pointed elsewhere), leaving every picture it promises;
 # and no man page's example calls a test tool (mkrate) or a build path.
 . "$TOP/tests/lib/common.sh"
 awk '/^## A walk through the contact example/ { on = 1 }
 	on && /^```sh$/ { code = 1; next }
 	code && /^```$/ { exit }
-	code { print }' "$TOP/README.md" >walk.sh
-[ -s walk.sh ] || fail "no sh block in the README's walk-through"
+	code { print }' "$TOP/docs/walkthrough.md" >walk.sh
+[ -s walk.sh ] || fail "no sh block in docs/walkthrough.md's walk-through"
 grep -q /tmp/contact walk.sh || fail "the walk-through no longer works in /tmp/contact: update this test"
 grep -q 'S=$T/build/bin' walk.sh || fail "the walk-through no longer takes the programs from \$T/build/bin: update this test"
 # the build under test (build-asan, build-nox11, ...) stands for build/

@@ -8,7 +8,7 @@
 # the box is clipped to an eighth of a sphere, still within 1%.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o rate.bin 5 5 5 -1.5 1.5 -1.5 1.5 -3 0 1 || fail "mkrate"
 radius_err() {   # max | |p - c| - 1 | over the nodes of the last set
 	awk -v cx="$2" -v cy="$3" -v cz="$4" 'NF == 3 {

@@ -7,7 +7,7 @@
 # per print time; -deloop is accepted.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 etch -h >usage.txt || fail "-h failed"
 grep -q "^usage: etch" usage.txt || fail "-h does not print usage"
 for opt in $(grep -o -- ' -[a-z][a-z0-9]*' usage.txt | sort -u); do

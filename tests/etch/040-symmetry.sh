@@ -12,7 +12,7 @@
 # nodes make the cuts differ most).
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 SEG=0.0666667
 MED_TOL=0.01
 MAX_TOL=0.3

@@ -14,7 +14,7 @@
 #   - -cut, -deloop and -xcheck are refused with the cell methods.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o u.bin 3 3 3 -0.5 0.5 -0.5 0.5 -0.5 0 1 || fail "mkrate"
 # face centres of the last set: "x y z" per face
 centres() {

@@ -1,13 +1,13 @@
 #!/bin/sh
-# etch -last writes only the final set (issue: a long run wrote a set per
-# print time with no way to skip them): for the ray-string and the
+# etch -last writes only the final set (a long run would otherwise write a set
+# per print time with no way to skip them): for the ray-string and the
 # fast-marching engines, curves.plot, curves.plot.2D and the cut of
 # "-pt 0.25 -last" are byte for byte the last set of the same run without
 # -last (sets are separated by one blank line); -last with the cell
 # methods is a usage error.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o rate.bin 21 21 11 -1 1 -1 1 -0.5 0 '0.1 + 0.8 * exp(-(x^2 + y^2) / 0.2)' ||
 	fail "mkrate"
 # (the '#' labels line heads the file, not a set: plot3d(5); -last keeps it)

@@ -25,7 +25,7 @@
  * 4. Figure 8.12: R = 2|x| + 0.2, 8 steps of 0.1 s: a loop is removed,
  *    no crossing is left, and every node lies within 2 segment lengths of
  *    the fast-marching front on a grid refined 4 times per axis (the
- *    issue's tolerance); the median distance is printed.
+ *    tolerance asked of delooping); the median distance is printed.
  * 5. The hashed grid gives the pierces of a search without grid, bit for
  *    bit, with 1, 2 and 3 threads (test_grid_reference), also on a mesh
  *    of triangles of very unlike sizes whose nodes lie on cell borders
@@ -264,13 +264,13 @@ static void test_triangular(double shift)
 	fmt_rate_free(r);
 }
 
-/* 5. The hashed grid (issue 15) against the reference search without a
+/* 5. The hashed grid against the reference search without a
  * grid (deloop_pierces_all: every pair whose x ranges meet, the same
  * crossing test): the same pierces, bit for bit, with 1, 2 and 3
  * threads, on the looped meshes of 1 (R = 2|x| + 0.2) and of two seeds
  * grown 1 s without deloop (Figure 8.13: 2 spheres crossing).  The pass
  * depends on the mesh only through this list, so equal lists give the
- * triangles of the grid before issue 15 (whose list was also exact). */
+ * triangles of the unhashed search before it (whose list was also exact). */
 static long same_pierces(const struct mesh *m, const char *what)
 {
 	struct deloop_pierce *ref, *pc;

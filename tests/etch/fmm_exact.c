@@ -1,6 +1,6 @@
 /*
  * fmm_exact.c - the fast-marching engine (src/etch/fmm*.c) against exact
- * answers (issue "Fast marching against exact answers").
+ * answers.
  *
  *  1. Uniform rate from the top: T = -z/R is linear, which both the
  *     first- and second-order upwind differences reproduce exactly, so

@@ -31,7 +31,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define Y_TOL 0.01              /* of S_ideal: the figure */
+#define Y_TOL 0.01              /* of S_ideal: the accuracy asked */
 #define LOOP_COS 0.5            /* rays 60 degrees apart: a loop, not a profile */
 /* S_ideal: the box width / 80, near the thesis' finest 2D runs (100
  * segments, Table 7.2).  At / 40 the worst node is 3% of S off the

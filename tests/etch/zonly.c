@@ -24,7 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define REL_TOL 1e-3    /* the figure for the default time step */
+#define REL_TOL 1e-3    /* the accuracy asked at the default time step */
 
 static double smooth(double z) { return 0.6 + 0.3 * sin(3 * z); }
 static double waves(double z) { return 0.55 + 0.45 * cos(2 * M_PI * z / 0.125); }

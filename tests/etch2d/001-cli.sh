@@ -12,7 +12,7 @@
 # written right to left as the same.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o r2.bin 11 1 11 -1 1 0 0 -1 0 '0.5+0.2*x' || fail "mkrate 2D"
 $MKRATE -ascii -o r2.txt 11 1 11 -1 1 0 0 -1 0 '0.5+0.2*x' || fail "mkrate 2D ascii"
 $MKRATE -o r3.bin 5 5 5 -1 1 -1 1 -1 0 1 || fail "mkrate 3D"

@@ -8,9 +8,9 @@
  *
  * Checks, for the profiles at 20, 40 and 60 s, the distance of every
  * profile point to the reference profile: median under half a cell and
- * 95th percentile under two cells (the issue's figures; a cell is the rate
- * grid's smaller spacing, 0.02 um).  Held to them: the methods the issue's
- * semicircle bullet names (raystring, string, fmm; the ray below) and
+ * 95th percentile under two cells (the accuracy asked of a surface method; a
+ * cell is the rate grid's smaller spacing, 0.02 um).  Held to them: the
+ * surface methods of semicircle.c (raystring, string, fmm; the ray below) and
  * Dill's cells, each at its defaults except where said:
  *   - raystring (S_ideal 0.04 um, the width / 50) and fmm (200 x 100);
  *   - the string at S_ideal = one cell (0.02 um).  At the default 0.04 its
@@ -30,8 +30,8 @@
 #include "e2test.h"
 
 #define CELL 0.02       /* um, the rate grid's smaller spacing */
-#define MED_TOL 0.5     /* cells, issue 17 */
-#define P95_TOL 2.0     /* cells, issue 17 */
+#define MED_TOL 0.5     /* cells: the median asked of a method */
+#define P95_TOL 2.0     /* cells: the 95th percentile asked */
 #define RAY_MED 0.1     /* cells: the ray ends at 20 s (0.01 measured) */
 #define ALL 3           /* check every print time */
 

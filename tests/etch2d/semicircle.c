@@ -6,7 +6,7 @@
  *
  * Checks every point of every print time's profile (t = 0.2 .. 1 s):
  *   - ray, string, raystring and fmm lie within 1 % of the radius
- *     (the issue's figure);
+ *     (the accuracy the methods are held to);
  *   - huygens at 40 cells a step (400 cells/um, dt 0.1 s) within 3 %;
  *   - each surface method's profile reaches the top at both ends (it
  *     covers the whole half circle, rays along the top included);
@@ -19,8 +19,8 @@
  */
 #include "e2test.h"
 
-#define TOL_SURF 0.01   /* issue 17: ray, string, raystring, fmm */
-#define TOL_HUY 0.03    /* issue 17: huygens at 40 cells a step */
+#define TOL_SURF 0.01   /* of the radius: ray, string, raystring, fmm */
+#define TOL_HUY 0.03    /* of the radius: huygens at 40 cells a step */
 #define OCT_MIN 0.06    /* along 22.5 degrees: a perfect octagon overshoots
 			 * 8.2 %; the cells' are rounder, 6.1 % at 50
 			 * cells/um growing to 6.6 % at 200 */

@@ -1,5 +1,5 @@
-# fem's physics on the image inside the resist (issue 11): the isolated 0.5
-# um contact at NA 0.6, i-line, in 1 um of resist of
+# fem's physics on the image inside the resist (splat's resist statement,
+# an image stack): the isolated 0.5 um contact at NA 0.6, i-line, in 1 um of resist of
 # tests/sample3D/030-bossung-stack.sh (11-plane image stack, fast-marching
 # development 60 s), swept over foci -0.9:0.3:0.3 and doses 70, 90 mJ/cm2,
 # with the bottom CD (5 % of the thickness above the substrate) from
@@ -16,7 +16,7 @@
 #    about 0.1 um larger than before, hence the target 0.53).
 # 10 points on a 21 x 21 grid: about 2 s of CPU.
 . "$TOP/tests/lib/common.sh"
-command -v measure >/dev/null 2>&1 || skip "measure is not built (issue 12)"
+built measure
 cat >m.in <<'IN'
 wavelength 0.365
 na 0.6
@@ -27,7 +27,7 @@ rect -0.25 -0.25 0.25 0.25
 grid 21 21
 resist thickness 1 index 1.7 planes 11
 IN
-splat -name m.in >/dev/null 2>&1 || skip "this splat has no image stack (issue 11)"
+splat -name m.in >/dev/null 2>err.txt || fail "splat refuses the image stack (resist statement): $(cat err.txt)"
 cat >r.in <<'IN'
 wavelength 0.365
 resist thickness 1 index 1.7 dill 0.8 0.05 0.014

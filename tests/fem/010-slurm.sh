@@ -9,7 +9,7 @@
 # finish in 120 s (squeue polled).  Without Slurm (no sbatch, slurmctld,
 # slurmd or munged) or without root, the test skips.
 . "$TOP/tests/lib/common.sh"
-command -v measure >/dev/null 2>&1 || skip "measure is not built (issue 12)"
+built measure
 for t in sbatch squeue scontrol slurmctld slurmd munged; do
 	command -v $t >/dev/null 2>&1 || [ -x /usr/sbin/$t ] || skip "Slurm is not installed (no $t; apt-get install slurm-wlm munge)"
 done

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Both engines at their default settings against a refined fast-marching
-# solution (issue 12, "CD-grade engines"): the contact of examples/contact
+# solution (both must be good enough to give CDs): the contact of examples/contact
 # on a 3 um cell (31 x 31 x-y nodes, 0.1 um as in the example; 100 z
 # points with bake, 150 without, to keep the reference small), developed
 # 60 s.  Over the developed surface below z = -0.02 um, the signed
@@ -13,7 +13,7 @@
 # too: 10 s; it gave fmm -0.014/0.055, ray -0.022/0.083).
 # Measured (mean, p95): with bake fmm -0.020 0.043, ray -deloop +0.008
 # 0.026; without bake fmm -0.022 0.069, ray -deloop -0.036 0.137.  Before
-# issue 12 the fast-marching surface of the full example lay -0.176 (p95
+# its bias was removed the fast-marching surface of the full example lay -0.176 (p95
 # 0.29) behind with bake, and the default run had no z refinement.
 . "$TOP/tests/lib/common.sh"
 X=$BUILD/tests/etch/fmm_exact

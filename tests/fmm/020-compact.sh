@@ -1,4 +1,4 @@
-# Compact fast-marching surfaces (issue 15): etch -method fmm writes
+# Compact fast-marching surfaces: etch -method fmm writes
 # every rectangle of cells whose surface is one exactly horizontal plane
 # as a few large triangles; -dense writes them cell by cell.  The two must
 # be the same surface: per set, the same area and enclosed volume (sum of

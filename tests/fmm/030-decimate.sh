@@ -1,4 +1,4 @@
-# Decimated fast-marching surfaces (issue 15, src/lib/tri_decimate.c):
+# Decimated fast-marching surfaces (src/lib/geometry/tri_decimate.c):
 # etch -method fmm (default -tol: 0.02 of the x-y spacing, here 0.002 um)
 # against -dense, on the contact of examples/contact in a 3 um cell (31 x
 # 31 x-y nodes at 0.1 um, nz 100, bake; nz 150 without), developed 60 s,

@@ -8,7 +8,7 @@
 . "$TOP/tests/lib/common.sh"
 F=$BUILD/tests/lib/fmtcat
 MK=$BUILD/tests/lib/mkrate
-[ -x "$MK" ] || skip "mkrate not built"
+built "$MK"
 # ps_has FILE TEXT: the PostScript draws the string TEXT ("(" and ")" escaped)
 ps_has() {
 	_t=$(printf '%s' "$2" | sed 's/[()]/\\&/g')

@@ -1,5 +1,5 @@
 # Every input in tests/fuzz/regress/ (the fuzzers' and the hand-made
-# findings of issue 14) through the real programs: the exit status and the
+# findings) through the real programs: the exit status and the
 # one-line message of tests/fuzz/regress/EXPECT, no crash, no sanitizer
 # report (exit 98/99, or a signal), within the time and memory limits, and
 # no temporary left behind.
@@ -7,8 +7,8 @@
 R=$TOP/tests/fuzz/regress
 S=$TOP/tests/fuzz/corpus
 # 10 s and, outside the sanitizers (whose shadow memory needs terabytes of
-# address space), 1.5 GB of address space as a stand-in for the 1 GB the
-# issue allows
+# address space), 1.5 GB of address space as a stand-in for the 1 GB a
+# reader may use on bad input
 limit=10 mem="ulimit -v 1500000;"
 case $BUILD in *asan*) limit=60 mem= ;; esac
 n=0

@@ -21,7 +21,7 @@ rect -0.625 -0.625 0.625 0.625
 contour image.cont
 M
 		sed 's/^grid .*/grid nz 60/' "$TOP/examples/contact/resist.in" >resist.in
-		sample3D -q -if mask.in -bf resist.in -et 40 -pt 20 -h -seg 0.3
+		sample3D -q -if mask.in -bf resist.in -et 40 -pt 20 -hidden -seg 0.3
 		;;
 	ridge)
 		# thesis Figure 8.7's rate R = exp(-4 x^2)(1.05 - cos(2 pi z)), 1.5 s

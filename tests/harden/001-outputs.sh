@@ -1,4 +1,4 @@
-# Atomic outputs (issue 14, item 9), against the rules of util.h:
+# Atomic outputs, against the rules of util.h:
 # - an output that is not a regular file (a symbolic link to a device, a
 #   FIFO) is written in place, never renamed over;
 # - a program with several outputs (splat: image and cutlines) commits
@@ -46,7 +46,7 @@ pdraw -noplot -svg x.svg t.3D 2>/dev/null || fail "pdraw -svg failed"
 
 # signals during etch: a slow run (many small steps), stopped after a second
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o r.bin 6 6 6 0 1 0 1 0 1 0.01 || fail "mkrate"
 for sig in INT TERM HUP PIPE; do
 	rm -f curves.plot*

@@ -39,8 +39,20 @@ close() {
 		fail "${4:-value}: $1 is not within $3 of $2"
 }
 
-# need TOOL: skip the test when TOOL is not installed.
+# need TOOL: skip the test when TOOL, an external tool (ghostscript,
+# groff, Xvfb, ...), is not installed.  Never for our own programs: built.
 need() { command -v "$1" >/dev/null 2>&1 || skip "$1 is not installed"; }
+
+# built FILE...: each FILE, one of our programs (a name: the build's
+# $BUILD/bin/FILE, never another on PATH) or test tools (a path, e.g.
+# "$BUILD/tests/lib/mkrate"), must be built; one that is not is a build
+# fault, so the test fails (a skip would let it pass unnoticed).
+built() {
+	for _b_f in "$@"; do
+		case $_b_f in */*) ;; *) _b_f=$BUILD/bin/$_b_f ;; esac
+		[ -f "$_b_f" ] && [ -x "$_b_f" ] || fail "$_b_f is not built (run make)"
+	done
+}
 
 # gs_check FILE.ps: ghostscript renders every page without an error.
 gs_check() {

@@ -1,7 +1,7 @@
 /*
  * meshcheck - test tool: the surfaces of a curves.plot (every curve a
  * triangle p1 p2 p3 p1), checked and compared independently of the code
- * that made them (issue 15's decimation: src/lib/tri_decimate.c).
+ * that made them (the decimation of src/lib/geometry/tri_decimate.c).
  *
  *   meshcheck stat FILE.plot
  *     per set one line: "set k triangles n area A volume V vertices nv

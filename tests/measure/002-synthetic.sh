@@ -9,7 +9,7 @@
 #   - a hole that does not clear (bottom at -0.4 um, cd 0 below),
 #   - a hole and a line with 0.05 um of resist loss.
 # -plot writes the table's cd against z.
-# Expected: cd within 0.5 % (the tolerance; a 256-sided polygon
+# Expected: cd within 0.5 % (the accuracy asked; a 256-sided polygon
 # stands for the cone's circle, 1e-4 off), swa within 0.3 degree, resist
 # loss within 1e-6 um, cleared exactly.
 . "$TOP/tests/lib/common.sh"

@@ -1,12 +1,12 @@
 #!/bin/sh
-# No two texts of a pdraw picture overlap (issue finding 1: "-0.70" was
-# drawn on "2.5"), measured on the SVG with Helvetica's real advance
+# No two texts of a pdraw picture overlap (once "-0.70" was drawn
+# on "2.5"), measured on the SVG with Helvetica's real advance
 # widths (tests/lib/textoverlap.awk), over boxes thin and thick, views
 # from every side, -e, -zs, and labelled axes as sample3D writes them.
 # The old placement fails the thin-resist case this test starts with.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 # a 5 x 5 um cell of 0.7 um resist with a developed dip, as the contact
 $MKRATE -o rate.bin 21 21 15 -2.5 2.5 -2.5 2.5 -0.7 0 '0.002 + 0.05 * exp(-(x^2 + y^2) / 0.3)' ||
 	fail "mkrate"

@@ -1,5 +1,5 @@
 # The plot programs estimate memory and time from a plot file's size
-# before reading it (plot_budget, issue 15: pdraw grew to 18.7 GB on a
+# before reading it (plot_budget: without it pdraw grew to 18.7 GB on a
 # 13 GB curves.plot before it was killed).  With the memory limit made
 # small (SAMPLE3D_MEMORY=100000 bytes, budget.h) a 600 kB file of 4000
 # triangles is beyond it: every reader refuses at once with one line

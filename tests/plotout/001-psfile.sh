@@ -1,6 +1,6 @@
 #!/bin/sh
-# Every plot program names its PostScript file with -psfile (issue: the
-# walk-through kept only its last picture): for drawmask, contour,
+# Every plot program names its PostScript file with -psfile (without it
+# the walk-through kept only its last picture): for drawmask, contour,
 # drawplot and pdraw, "-psfile NAME" writes NAME byte-identical to the
 # dataplot.ps the same command writes without it, and leaves an existing
 # dataplot.ps untouched; an empty name is a usage error (exit 2, the reason on the first line, then

@@ -1,6 +1,6 @@
 #!/bin/sh
-# tests/run.sh itself (issue: make check ran one test at a time and said
-# nothing until the end), on a small tree of its own:
+# tests/run.sh itself (so that make check runs tests side by side and
+# reports as it goes, not one at a time and nothing until the end), on a small tree of its own:
 #  - with TEST_JOBS=2 two tests run at the same time: a/001 waits (up to
 #    60 s) for a file b/001 writes, so it passes only if both run at once;
 #  - every area is reported as a block: its tests in name order, then

@@ -1,6 +1,9 @@
 # sample3D follows the SAMPLE3D(L) guide's branching: -if/-bf/-et runs all
 # three stages; -cf/-bf runs bleach only; -rb/-ra with -et runs etch only;
-# -ascii, -solid, -pt, -h reach the right stages; etch options pass through;
+# -ascii, -solid, -pt, -hidden reach the right stages (-hidden: the
+# profile's faces are filled with paper white, the thesis' hidden-line
+# mesh, where the default shades them in many greys); -h and --help print
+# the usage and exit 0; etch options pass through;
 # a failing stage stops the run with its own message and a non-zero exit
 # and leaves the earlier outputs; usage errors exit 2.  Checked against
 # the files each stage must (and must not) leave in the directory.
@@ -63,8 +66,21 @@ grep -q '^bleach: bad.in:2: ' err.txt || fail "bleach's own message not shown: $
 [ ! -e curves.plot ] || fail "etch ran after bleach failed"
 cd ..
 
+# -hidden: the hidden-line mesh (white faces) instead of the shaded solid
+# (pdraw -walls against -walls -shade; the side walls are 0.82 grey in both)
+cd b
+sample3D -q -rb ../rval.3D.binary -et 5 || fail "shaded run failed"
+shades=$(grep -o '[0-9][0-9.]* F\b' profile.ps | sort -u | wc -l)
+[ "$shades" -gt 5 ] || fail "default profile: $shades grey levels, expected a shaded solid"
+sample3D -q -rb ../rval.3D.binary -et 5 -hidden || fail "-hidden run failed"
+grep -o '[0-9][0-9.]* F\b' profile.ps | sort -u >greys.txt
+printf '%s\n' '0.82 F' '1 F' >want.txt
+same greys.txt want.txt
+cd ..
+
 # usage
 sample3D --help | grep -q '^usage: sample3D' || fail "--help"
+sample3D -h | grep -q '^usage: sample3D' || fail "-h does not print the usage"
 sample3D -zz >/dev/null 2>&1; [ $? -eq 2 ] || fail "bad option: expected exit 2"
 sample3D >/dev/null 2>&1; [ $? -eq 2 ] || fail "nothing to do: expected exit 2"
 sample3D -bf resist.in >/dev/null 2>&1; [ $? -eq 2 ] || fail "-bf without an image: expected exit 2"

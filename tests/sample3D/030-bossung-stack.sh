@@ -1,5 +1,5 @@
-# The Bossung asymmetry that the image inside the resist brings (issue
-# 11): an isolated 0.5 um contact at NA 0.6, i-line, sigma 0.5, in 1 um of
+# The Bossung asymmetry that the image inside the resist brings
+# (splat's resist statement): an isolated 0.5 um contact at NA 0.6, i-line, sigma 0.5, in 1 um of
 # resist (index 1.7, Dill 0.8 0.05 0.014 on silicon, 0.05 um bake, Mack
 # development), exposed at 80 mJ/cm2 and developed 60 s (fast marching);
 # the bottom CD is measured 5% of the thickness above the substrate with
@@ -15,7 +15,7 @@
 # for speed (2.4 s): at 0.03 um spacing the CDs are ~0.04 um larger, the
 # margin the same (examples/contact-highna).
 . "$TOP/tests/lib/common.sh"
-command -v measure >/dev/null 2>&1 || skip "measure is not built"
+built measure
 cat >m.in <<'IN'
 wavelength 0.365
 na 0.6

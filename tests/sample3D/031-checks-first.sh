@@ -1,6 +1,7 @@
 #!/bin/sh
 # sample3D checks every stage's options before it runs any, and runs the
-# programs beside itself before any on PATH (issue findings 3 and 4).
+# programs beside itself before any on PATH (a bad option once cost a splat
+# and a bleach run, and an installed splat once ran instead of the build's).
 # 1. "-et 30s" (and an unknown etch option through -etch) fail with one
 #    line, exit 2, and leave existing image.cont and rval.3D.binary
 #    untouched (nothing runs).

@@ -1,4 +1,4 @@
-# Command-line overrides for sweeps (issue 11): "splat -defocus d" and
+# Command-line overrides for sweeps (fem): "splat -defocus d" and
 # "bleach -dose D" give byte for byte the output of the input file with
 # its defocus or dose statement edited to that value (cutlines included),
 # whether the file had the statement or not; a bad value is one line on

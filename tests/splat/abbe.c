@@ -12,7 +12,7 @@
  *      dark-field contact, lines and spaces, a polygon with a defect, an
  *      annular, a quadrupole, a dipole and a sigma 1.3 source, defocus
  *      with coma and spherical aberration, a three-plane image stack (resist
- *      statement): max |I_abbe - I_hopkins| < 1e-3 (issue 15; with the
+ *      statement): max |I_abbe - I_hopkins| < 1e-3 (the accuracy asked; with the
  *      default source cells it is about 1e-4; printed), and 4 times
  *      finer cells come 4 times closer (the error is second order in the
  *      cell: checked as at least 2.5 times closer on the contact);

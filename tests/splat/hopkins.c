@@ -79,7 +79,7 @@ static void test_fields(void)
 /* ---- 2. coherent three-beam grating ---- */
 static void test_three_beam(void)
 {
-	const double TOL = 1e-6;      /* the figure; rounding gives ~1e-15 */
+	const double TOL = 1e-6;      /* the accuracy asked; rounding gives ~1e-15 */
 	const double p = 2.0, lambda = 0.436;
 	/* orders +-1 at 0.5/um pass NA/lambda = 0.642/um, +-3 at 1.5/um do
 	 * not, even orders of an equal line/space vanish; y orders at 1/um
@@ -267,7 +267,7 @@ static void abbe_image(struct abbe *a)
 
 static void test_abbe(void)
 {
-	const double TOL = 1e-6;      /* the figure */
+	const double TOL = 1e-6;      /* the accuracy asked */
 	struct abbe a;
 	memset(&a, 0, sizeof a);
 	a.ng = 14;
@@ -395,7 +395,7 @@ static void test_symmetry(void)
 /* ---- 5. convergence of the source integral ---- */
 static void test_convergence(void)
 {
-	const double TOL = 1e-4;      /* the figure, quoted in splat.5 */
+	const double TOL = 1e-4;      /* the accuracy asked, quoted in splat.5 */
 	static const char *cases[] = {
 		"sigma 0.5\n",
 		"sigma 0.3\ncoma 0.4 field 1 0\ndefocus 1\n",

@@ -16,7 +16,7 @@
  *      quadrature over triangles, its own pupil and source integration,
  *      as in hopkins.c) against the Hopkins image of splat for an
  *      L-shape and a 45-degree octagon, partially coherent, defocused,
- *      comatic: 1e-6 (the issue's figure);
+ *      comatic: 1e-6 (the accuracy asked);
  *   5. fmt_splat_write round trip of rects, polygons, clip on and a gds
  *      statement interleaved: write -> read -> write is byte-identical and
  *      the mask coefficients are the same (exactly).
@@ -48,7 +48,7 @@ static double coef_diff(const struct splat_mask *a, const struct splat_mask *b, 
 /* ---- 1. rect as polygon ---- */
 static void test_rect(void)
 {
-	const double TOL = 1e-12;       /* the figure */
+	const double TOL = 1e-12;       /* the accuracy asked */
 	struct splat_input *r = input("window -1.5 1.5 -1 1.2\nbackground 0.2 180\n"
 				      "rect -0.5 -0.3 0.7 0.4 1 0\nrect 0.2 0.1 1.1 0.9 0.5 90\n"
 				      "rect -1.2 -0.8 0 0 1 0\n");
@@ -297,7 +297,7 @@ static void abbe_image(struct abbe *a)
 
 static void abbe_case(const char *name, const char *poly)
 {
-	const double TOL = 1e-6;        /* the figure */
+	const double TOL = 1e-6;        /* the accuracy asked */
 	static struct abbe a;
 	memset(&a, 0, sizeof a);
 	a.ng = 12;

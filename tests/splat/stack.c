@@ -1,13 +1,13 @@
 /*
  * stack.c - checks splat's image stack (the image inside the resist,
- * splat(5)'s resist statement, issue 11) against results that do not
+ * splat(5)'s resist statement) against results that do not
  * come from its TCC code:
  *   1. an Abbe summation written here - its own mask coefficients, its
  *      own pupil with angles, its own depth phase
  *      W_z = (z / lambda)(sqrt(n^2 - lambda^2 |f|^2) - n), its own source
  *      integration (rows cut at every pupil edge) - against every plane
  *      of a stack at NA 0.6 with partial coherence, defocus and coma
- *      (1e-6, the issue's figure);
+ *      (1e-6, the accuracy asked);
  *   2. with index n = 1 the depth phase is the defocus phase, so plane z
  *      of a stack at defocus d equals the single image at defocus d + z
  *      (1e-12 at equal quadrature orders: rounding only);
@@ -229,7 +229,7 @@ static void abbe_image(struct abbe *a)
 
 static void test_abbe(void)
 {
-	const double TOL = 1e-6;      /* the issue's figure */
+	const double TOL = 1e-6;      /* the accuracy asked */
 	static struct abbe a;
 	a.ng = 10;
 	quad_gauss(a.ng, a.gu, a.gw);
@@ -370,7 +370,7 @@ static void test_paraxial(void)
 	/* the phases differ by (z lambda^3 |f|^4 / 8)(1/n - 1/n^3) waves at
 	 * fourth order, ~1e-4 waves at the pupil edge at z = 20 um; a 20 um
 	 * film is 0.55 of the focal depth lambda/NA^2, so the image moves */
-	const double TOL = 1e-3;      /* the issue's figure */
+	const double TOL = 1e-3;      /* the accuracy asked */
 	const double T = 20, n = 1.7;
 	enum { NP = 3 };
 	static const char base[] = "wavelength 0.365\nna 0.1\nsigma 0.5\n"

@@ -1,5 +1,5 @@
-# Output does not depend on the thread count, for the parts of etch that
-# issue 15 threaded: the fast-marching surfaces (one print time per
+# Output does not depend on the thread count, for the threaded parts of
+# etch: the fast-marching surfaces (one print time per
 # thread, then formatted in parallel) and the deloop pass's crossing
 # search (ranges of segments, each with its own list, sorted at the end).
 #   - etch -method fmm on a 3 um cell of a 0.9 um line in a clear field

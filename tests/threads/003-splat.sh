@@ -1,4 +1,4 @@
-# splat's output does not depend on the thread count (issue 15): a 5 um
+# splat's output does not depend on the thread count: a 5 um
 # window at i-line NA 0.6 sigma 0.5 (481 orders: the pair loop's rows
 # split at 64 pairs, the Abbe FFT's 25 columns and 50 rows at 8, the
 # image's rows in blocks of 16 per thread), with a cutline and, in a

@@ -9,7 +9,7 @@
 # sum over curves.plot (relative 1e-9).  Skipped without python3-vtk9.
 . "$TOP/tests/lib/common.sh"
 MKRATE=$BUILD/tests/lib/mkrate
-[ -x "$MKRATE" ] || skip "mkrate not built"
+built "$MKRATE"
 $MKRATE -o rate.bin 21 21 11 -1 1 -1 1 -0.5 0 '0.1 + 0.8 * exp(-(x^2 + y^2) / 0.2)' ||
 	fail "mkrate"
 etch -et 1 -pt 0.5 -q -vtk etch.vtp -no2d rate.bin || fail "etch -vtk"

@@ -1,12 +1,12 @@
 #!/bin/sh
-# The two engines agree to CD precision (issue 12): hole CDs (measure
+# The two engines agree to CD precision: hole CDs (measure
 # -rel 10,50,90 -hole: the equivalent diameter of the opening at 10, 50
 # and 90 % of the resist height) of the ray-string surface with -deloop
 # and of the fast-marching surface, both at their default settings, within
 # 2 % of each other at every height, 60 s of development:
 #   - the baked contact of examples/contact (Figures 8.17-8.18), measured
 #     fmm 0.8179 0.9989 1.2177 um, ray 0.8292 1.0059 1.2347 (1.4, 0.7,
-#     1.4 %; before issue 12 5.5, 5.1, 2.8 %);
+#     1.4 %; before the fast-marching bias was removed 5.5, 5.1, 2.8 %);
 #   - a 2x2 array of the same 1.25 um contacts at 2.5 um pitch (the window
 #     repeats it, so an endless array), in the same baked resist, the hole
 #     at (1.25, 1.25): measured fmm 0.8417 1.0128 1.2250, ray 0.8506

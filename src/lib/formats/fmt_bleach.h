@@ -74,7 +74,7 @@ struct bleach_input {
 	double order;               /* m */
 	double temp;                /* degrees Celsius */
 	double time;                /* s */
-	/* chemically amplified positive resist (issue 18): the car and peb
+	/* chemically amplified positive resist: the car and peb
 	 * statements, rates already evaluated at the bake temperature */
 	int have_car;               /* car and peb given (they need each other) */
 	double q0;                  /* quencher, relative to the photoacid generator */

@@ -14,8 +14,8 @@
  *
  *     # el dof focus_centre dose_centre
  *
- * and the reader of measure(1)'s table (its first row, "# swa", "#
- * resist_loss", "# cleared"), which is how a point's result enters fem.dat.
+ * A point's result enters fem.dat from measure(1)'s table (fmt_measure.h):
+ * its first row, "# swa", "# resist_loss" and "# cleared".
  */
 #ifndef S3D_FMT_FEM_H
 #define S3D_FMT_FEM_H
@@ -43,16 +43,6 @@ struct fem_table *fmt_fem_read(const char *path);
 /* Writes t (rows must be in order; dies otherwise), atomically. */
 void fmt_fem_write(const char *path, const struct fem_table *t);
 void fmt_fem_free(struct fem_table *t);
-
-/* What fem takes from one measure(1) table. */
-struct fem_measure {
-	double z, cd;   /* the first row */
-	double swa;     /* NAN without a "# swa" line */
-	double loss;    /* NAN without a "# resist_loss" line */
-	int cleared;    /* "# cleared yes|no" (required) */
-};
-/* Reads a measure table; dies "prog: file:line: what" if it is not one. */
-void fmt_fem_read_measure(const char *path, struct fem_measure *m);
 
 /* One row of window.dat. */
 struct fem_window_row {

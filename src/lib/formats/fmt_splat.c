@@ -344,13 +344,234 @@ static void finish_layers(struct lex *lx, struct splat_input *in)
 	}
 }
 
+/* What the reader keeps between statements: the capacities of the
+ * growing arrays and the lines whole-file checks name. */
+struct reader {
+	struct lex *lx;
+	struct splat_input *in;
+	size_t acap, rcap, ccap, lcap;
+	int have_window;
+	long window_line, source_line;
+};
+
+/* The optics: wavelength, NA, the source, defocus, the resist stack and
+ * the aberrations.  Returns 0 if kw is none of these. */
+static int optics_statement(struct reader *rd, const char *kw, char **tok, int n)
+{
+	struct lex *lx = rd->lx;
+	struct splat_input *in = rd->in;
+	if (strcasecmp(kw, "wavelength") == 0) {
+		want(lx, kw, n, 1, 1, "wavelength micrometres");
+		in->wavelength = number(lx, kw, "a wavelength in micrometres", tok[1]);
+		if (!(in->wavelength > 0))
+			lex_error(lx, "wavelength must be positive");
+		in_range(lx, kw, in->wavelength, WAVE_MIN, WAVE_MAX, "um");
+	} else if (strcasecmp(kw, "na") == 0) {
+		want(lx, kw, n, 1, 1, "na value");
+		in->na = number(lx, kw, "a numerical aperture", tok[1]);
+		if (!(in->na > 0 && in->na < 1))
+			lex_error(lx, "na must be in (0, 1), found %g", in->na);
+	} else if (strcasecmp(kw, "sigma") == 0) {
+		want(lx, kw, n, 1, 1, "sigma value");
+		double s = number(lx, kw, "a partial coherence", tok[1]);
+		if (s < 0)
+			lex_error(lx, "sigma must not be negative, found %g", s);
+		in->source = SPLAT_SRC_CIRCLE;
+		in->sigma = s;
+		rd->source_line = lex_lineno(lx);
+	} else if (strcasecmp(kw, "annular") == 0) {
+		want(lx, kw, n, 2, 2, "annular s_in s_out");
+		double a = number(lx, kw, "s_in", tok[1]);
+		double b = number(lx, kw, "s_out", tok[2]);
+		if (a < 0 || b <= a)
+			lex_error(lx, "annular: need 0 <= s_in < s_out, found %g %g", a, b);
+		in->source = SPLAT_SRC_ANNULAR;
+		in->s_in = a;
+		in->s_out = b;
+		rd->source_line = lex_lineno(lx);
+	} else if (strcasecmp(kw, "quadrupole") == 0 || strcasecmp(kw, "dipole") == 0) {
+		int quad = strcasecmp(kw, "quadrupole") == 0;
+		if (quad)
+			want(lx, kw, n, 2, 2, "quadrupole c r");
+		else
+			want(lx, kw, n, 2, 3, "dipole c r [x|y]");
+		double c = number(lx, kw, "the pole centre distance", tok[1]);
+		double r = number(lx, kw, "the pole radius", tok[2]);
+		if (c < 0 || r <= 0)
+			lex_error(lx, "%s: need c >= 0 and r > 0, found %g %g", kw, c, r);
+		/* the poles are added as separate discs: they must not overlap */
+		double gap = quad ? c * sqrt(2.0) : 2 * c;
+		if (gap < 2 * r)
+			lex_error(lx, "%s: poles of radius %g at distance %g overlap", kw, r, c);
+		in->dipole_y = 0;
+		if (!quad && n == 4) {
+			if (strcasecmp(tok[3], "y") == 0)
+				in->dipole_y = 1;
+			else if (strcasecmp(tok[3], "x") != 0)
+				lex_error(lx, "dipole: expected x or y, found \"%.40s\"", tok[3]);
+		}
+		in->source = quad ? SPLAT_SRC_QUADRUPOLE : SPLAT_SRC_DIPOLE;
+		in->pole_c = c;
+		in->pole_r = r;
+		rd->source_line = lex_lineno(lx);
+	} else if (strcasecmp(kw, "defocus") == 0) {
+		want(lx, kw, n, 1, 1, "defocus micrometres");
+		in->defocus = number(lx, kw, "a defocus in micrometres", tok[1]);
+		in_range(lx, kw, in->defocus, -DEFOCUS_MAX, DEFOCUS_MAX, "um");
+	} else if (strcasecmp(kw, "resist") == 0) {
+		resist_stack(lx, in, tok, n);
+	} else if (strcasecmp(kw, "coma") == 0) {
+		field_term(lx, in, &rd->acap, SPLAT_AB_COMA, tok, n);
+	} else if (strcasecmp(kw, "astigmatism") == 0) {
+		field_term(lx, in, &rd->acap, SPLAT_AB_ASTIGMATISM, tok, n);
+	} else if (strcasecmp(kw, "curvature") == 0) {
+		field_term(lx, in, &rd->acap, SPLAT_AB_CURVATURE, tok, n);
+	} else if (strcasecmp(kw, "distortion") == 0) {
+		field_term(lx, in, &rd->acap, SPLAT_AB_DISTORTION, tok, n);
+	} else if (strcasecmp(kw, "spherical") == 0) {
+		want(lx, kw, n, 1, 1, "spherical w");
+		double w = number(lx, kw, "the aberration in waves", tok[1]);
+		in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
+		add_aberr(in, &rd->acap, SPLAT_AB_SPHERICAL, w, 0, 0, 0, lex_lineno(lx));
+	} else if (strcasecmp(kw, "zernike") == 0) {
+		want(lx, kw, n, 2, 2, "zernike N c");
+		long z;
+		if (!num_parse_count(tok[1], 1, SPLAT_MAX_ZERNIKE, &z))
+			lex_error(lx, "zernike: expected a fringe term number 1 to %d, "
+				  "found \"%.40s\"", SPLAT_MAX_ZERNIKE, tok[1]);
+		double w = number(lx, kw, "a coefficient in waves", tok[2]);
+		in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
+		add_aberr(in, &rd->acap, SPLAT_AB_ZERNIKE, w, 0, 0, (int)z, lex_lineno(lx));
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
+/* The mask: background, rect, polygon, gds, clip.  Returns 0 if kw is
+ * none of these. */
+static int mask_statement(struct reader *rd, const char *kw, char **tok, int n)
+{
+	struct lex *lx = rd->lx;
+	struct splat_input *in = rd->in;
+	if (strcasecmp(kw, "background") == 0) {
+		if (n == 2 && strcasecmp(tok[1], "dark") == 0) {
+			in->mask.bg_t = 0;
+			in->mask.bg_phase = 0;
+		} else if (n == 2 && strcasecmp(tok[1], "clear") == 0) {
+			in->mask.bg_t = 1;
+			in->mask.bg_phase = 0;
+		} else if (n == 3) {
+			trans_phase(lx, kw, tok[1], tok[2], &in->mask.bg_t, &in->mask.bg_phase);
+		} else {
+			lex_error(lx, "background: expected dark, clear or \"T PHASE\"");
+		}
+	} else if (strcasecmp(kw, "rect") == 0) {
+		if (n != 5 && n != 7)
+			lex_error(lx, "rect: expected \"rect x1 y1 x2 y2 [T PHASE]\"");
+		struct splat_rect r;
+		r.x1 = number(lx, kw, "x1", tok[1]);
+		r.y1 = number(lx, kw, "y1", tok[2]);
+		r.x2 = number(lx, kw, "x2", tok[3]);
+		r.y2 = number(lx, kw, "y2", tok[4]);
+		r.t = 1;
+		r.phase = 0;
+		if (n == 7)
+			trans_phase(lx, kw, tok[5], tok[6], &r.t, &r.phase);
+		if (r.x1 > r.x2) { double t = r.x1; r.x1 = r.x2; r.x2 = t; }
+		if (r.y1 > r.y2) { double t = r.y1; r.y1 = r.y2; r.y2 = t; }
+		if (!(r.x2 > r.x1 && r.y2 > r.y1))
+			lex_error(lx, "rect: zero width or height");
+		r.line = lex_lineno(lx);
+		xgrow(&in->mask.rects, &rd->rcap, (size_t)in->mask.nrects + 1, sizeof r);
+		in->mask.rects[in->mask.nrects++] = r;
+	} else if (strcasecmp(kw, "polygon") == 0) {
+		polygon_statement(lx, in, &rd->lcap, tok, n);
+	} else if (strcasecmp(kw, "gds") == 0) {
+		gds_statement(lx, in, &rd->lcap, tok, n);
+	} else if (strcasecmp(kw, "clip") == 0) {
+		if (n != 2 || (strcasecmp(tok[1], "on") != 0 && strcasecmp(tok[1], "off") != 0))
+			lex_error(lx, "clip: expected \"clip on\" or \"clip off\"");
+		in->clip = strcasecmp(tok[1], "on") == 0;
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
+/* The simulation cell and the outputs: window, grid, contour, cutline.
+ * Returns 0 if kw is none of these. */
+static int output_statement(struct reader *rd, const char *kw, char **tok, int n)
+{
+	struct lex *lx = rd->lx;
+	struct splat_input *in = rd->in;
+	if (strcasecmp(kw, "window") == 0 && n >= 2 && strcasecmp(tok[1], "auto") == 0) {
+		in->margin = -1;
+		if (n == 4 && strcasecmp(tok[2], "margin") == 0) {
+			in->margin = number(lx, kw, "a margin in micrometres", tok[3]);
+			if (in->margin < 0)
+				lex_error(lx, "window auto: the margin must not be negative");
+		} else if (n != 2) {
+			lex_error(lx, "window: expected \"window auto [margin m]\"");
+		}
+		in->window_auto = 1;
+		rd->have_window = 1;
+		rd->window_line = lex_lineno(lx);
+	} else if (strcasecmp(kw, "window") == 0) {
+		in->window_auto = 0;
+		want(lx, kw, n, 4, 4, "window xmin xmax ymin ymax");
+		double w[4];
+		for (int i = 0; i < 4; i++)
+			w[i] = number(lx, kw, "a window bound", tok[i + 1]);
+		if (!(w[1] > w[0] && w[3] > w[2]))
+			lex_error(lx, "window: need xmax > xmin and ymax > ymin (zero area)");
+		in->mask.xmin = w[0];
+		in->mask.xmax = w[1];
+		in->mask.ymin = w[2];
+		in->mask.ymax = w[3];
+		rd->have_window = 1;
+		rd->window_line = lex_lineno(lx);
+	} else if (strcasecmp(kw, "grid") == 0) {
+		want(lx, kw, n, 2, 2, "grid nx ny");
+		long nx, ny;
+		if (!num_parse_count(tok[1], 2, SPLAT_MAX_GRID, &nx) ||
+		    !num_parse_count(tok[2], 2, SPLAT_MAX_GRID, &ny))
+			lex_error(lx, "grid: expected two counts from 2 to %d",
+				  SPLAT_MAX_GRID);
+		in->nx = (int)nx;
+		in->ny = (int)ny;
+	} else if (strcasecmp(kw, "contour") == 0) {
+		want(lx, kw, n, 1, 1, "contour FILE");
+		free(in->contour);
+		in->contour = xstrdup(tok[1]);
+		in->contour_set = 1;
+	} else if (strcasecmp(kw, "cutline") == 0) {
+		want(lx, kw, n, 6, 6, "cutline x1 y1 x2 y2 npts FILE");
+		struct splat_cutline c;
+		c.x1 = number(lx, kw, "x1", tok[1]);
+		c.y1 = number(lx, kw, "y1", tok[2]);
+		c.x2 = number(lx, kw, "x2", tok[3]);
+		c.y2 = number(lx, kw, "y2", tok[4]);
+		long np;
+		if (!num_parse_count(tok[5], 2, SPLAT_MAX_CUTPTS, &np))
+			lex_error(lx, "cutline: expected a point count from 2 to %d, "
+				  "found \"%.40s\"", SPLAT_MAX_CUTPTS, tok[5]);
+		c.npts = (int)np;
+		c.line = lex_lineno(lx);
+		xgrow(&in->cutlines, &rd->ccap, (size_t)in->ncutlines + 1, sizeof c);
+		c.file = xstrdup(tok[6]);
+		in->cutlines[in->ncutlines++] = c;
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
 struct splat_input *fmt_splat_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
 	struct splat_input *in = xcalloc(1, sizeof *in);
-	size_t acap = 0, rcap = 0, ccap = 0, lcap = 0;
-	int have_window = 0;
-	long window_line = 0, source_line = 0;
+	struct reader r = {lx, in, 0, 0, 0, 0, 0, 0, 0};
 	in->wavelength = 0.436;
 	in->na = 0.28;
 	in->source = SPLAT_SRC_CIRCLE;
@@ -367,190 +588,13 @@ struct splat_input *fmt_splat_read(const char *path)
 		const char *kw = tok[0];
 		if (quoted[0])
 			lex_error(lx, "unknown statement \"%.40s\"", kw);
-		if (strcasecmp(kw, "wavelength") == 0) {
-			want(lx, kw, n, 1, 1, "wavelength micrometres");
-			in->wavelength = number(lx, kw, "a wavelength in micrometres", tok[1]);
-			if (!(in->wavelength > 0))
-				lex_error(lx, "wavelength must be positive");
-			in_range(lx, kw, in->wavelength, WAVE_MIN, WAVE_MAX, "um");
-		} else if (strcasecmp(kw, "na") == 0) {
-			want(lx, kw, n, 1, 1, "na value");
-			in->na = number(lx, kw, "a numerical aperture", tok[1]);
-			if (!(in->na > 0 && in->na < 1))
-				lex_error(lx, "na must be in (0, 1), found %g", in->na);
-		} else if (strcasecmp(kw, "sigma") == 0) {
-			want(lx, kw, n, 1, 1, "sigma value");
-			double s = number(lx, kw, "a partial coherence", tok[1]);
-			if (s < 0)
-				lex_error(lx, "sigma must not be negative, found %g", s);
-			in->source = SPLAT_SRC_CIRCLE;
-			in->sigma = s;
-			source_line = lex_lineno(lx);
-		} else if (strcasecmp(kw, "annular") == 0) {
-			want(lx, kw, n, 2, 2, "annular s_in s_out");
-			double a = number(lx, kw, "s_in", tok[1]);
-			double b = number(lx, kw, "s_out", tok[2]);
-			if (a < 0 || b <= a)
-				lex_error(lx, "annular: need 0 <= s_in < s_out, found %g %g", a, b);
-			in->source = SPLAT_SRC_ANNULAR;
-			in->s_in = a;
-			in->s_out = b;
-			source_line = lex_lineno(lx);
-		} else if (strcasecmp(kw, "quadrupole") == 0 || strcasecmp(kw, "dipole") == 0) {
-			int quad = strcasecmp(kw, "quadrupole") == 0;
-			if (quad)
-				want(lx, kw, n, 2, 2, "quadrupole c r");
-			else
-				want(lx, kw, n, 2, 3, "dipole c r [x|y]");
-			double c = number(lx, kw, "the pole centre distance", tok[1]);
-			double r = number(lx, kw, "the pole radius", tok[2]);
-			if (c < 0 || r <= 0)
-				lex_error(lx, "%s: need c >= 0 and r > 0, found %g %g", kw, c, r);
-			/* the poles are added as separate discs: they must not overlap */
-			double gap = quad ? c * sqrt(2.0) : 2 * c;
-			if (gap < 2 * r)
-				lex_error(lx, "%s: poles of radius %g at distance %g overlap", kw, r, c);
-			in->dipole_y = 0;
-			if (!quad && n == 4) {
-				if (strcasecmp(tok[3], "y") == 0)
-					in->dipole_y = 1;
-				else if (strcasecmp(tok[3], "x") != 0)
-					lex_error(lx, "dipole: expected x or y, found \"%.40s\"", tok[3]);
-			}
-			in->source = quad ? SPLAT_SRC_QUADRUPOLE : SPLAT_SRC_DIPOLE;
-			in->pole_c = c;
-			in->pole_r = r;
-			source_line = lex_lineno(lx);
-		} else if (strcasecmp(kw, "defocus") == 0) {
-			want(lx, kw, n, 1, 1, "defocus micrometres");
-			in->defocus = number(lx, kw, "a defocus in micrometres", tok[1]);
-			in_range(lx, kw, in->defocus, -DEFOCUS_MAX, DEFOCUS_MAX, "um");
-		} else if (strcasecmp(kw, "resist") == 0) {
-			resist_stack(lx, in, tok, n);
-		} else if (strcasecmp(kw, "coma") == 0) {
-			field_term(lx, in, &acap, SPLAT_AB_COMA, tok, n);
-		} else if (strcasecmp(kw, "astigmatism") == 0) {
-			field_term(lx, in, &acap, SPLAT_AB_ASTIGMATISM, tok, n);
-		} else if (strcasecmp(kw, "curvature") == 0) {
-			field_term(lx, in, &acap, SPLAT_AB_CURVATURE, tok, n);
-		} else if (strcasecmp(kw, "distortion") == 0) {
-			field_term(lx, in, &acap, SPLAT_AB_DISTORTION, tok, n);
-		} else if (strcasecmp(kw, "spherical") == 0) {
-			want(lx, kw, n, 1, 1, "spherical w");
-			double w = number(lx, kw, "the aberration in waves", tok[1]);
-			in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
-			add_aberr(in, &acap, SPLAT_AB_SPHERICAL, w, 0, 0, 0, lex_lineno(lx));
-		} else if (strcasecmp(kw, "zernike") == 0) {
-			want(lx, kw, n, 2, 2, "zernike N c");
-			long z;
-			if (!num_parse_count(tok[1], 1, SPLAT_MAX_ZERNIKE, &z))
-				lex_error(lx, "zernike: expected a fringe term number 1 to %d, "
-					  "found \"%.40s\"", SPLAT_MAX_ZERNIKE, tok[1]);
-			double w = number(lx, kw, "a coefficient in waves", tok[2]);
-			in_range(lx, kw, w, -ABERR_MAX, ABERR_MAX, "waves");
-			add_aberr(in, &acap, SPLAT_AB_ZERNIKE, w, 0, 0, (int)z, lex_lineno(lx));
-		} else if (strcasecmp(kw, "background") == 0) {
-			if (n == 2 && strcasecmp(tok[1], "dark") == 0) {
-				in->mask.bg_t = 0;
-				in->mask.bg_phase = 0;
-			} else if (n == 2 && strcasecmp(tok[1], "clear") == 0) {
-				in->mask.bg_t = 1;
-				in->mask.bg_phase = 0;
-			} else if (n == 3) {
-				trans_phase(lx, kw, tok[1], tok[2], &in->mask.bg_t, &in->mask.bg_phase);
-			} else {
-				lex_error(lx, "background: expected dark, clear or \"T PHASE\"");
-			}
-		} else if (strcasecmp(kw, "rect") == 0) {
-			if (n != 5 && n != 7)
-				lex_error(lx, "rect: expected \"rect x1 y1 x2 y2 [T PHASE]\"");
-			struct splat_rect r;
-			r.x1 = number(lx, kw, "x1", tok[1]);
-			r.y1 = number(lx, kw, "y1", tok[2]);
-			r.x2 = number(lx, kw, "x2", tok[3]);
-			r.y2 = number(lx, kw, "y2", tok[4]);
-			r.t = 1;
-			r.phase = 0;
-			if (n == 7)
-				trans_phase(lx, kw, tok[5], tok[6], &r.t, &r.phase);
-			if (r.x1 > r.x2) { double t = r.x1; r.x1 = r.x2; r.x2 = t; }
-			if (r.y1 > r.y2) { double t = r.y1; r.y1 = r.y2; r.y2 = t; }
-			if (!(r.x2 > r.x1 && r.y2 > r.y1))
-				lex_error(lx, "rect: zero width or height");
-			r.line = lex_lineno(lx);
-			xgrow(&in->mask.rects, &rcap, (size_t)in->mask.nrects + 1, sizeof r);
-			in->mask.rects[in->mask.nrects++] = r;
-		} else if (strcasecmp(kw, "polygon") == 0) {
-			polygon_statement(lx, in, &lcap, tok, n);
-		} else if (strcasecmp(kw, "gds") == 0) {
-			gds_statement(lx, in, &lcap, tok, n);
-		} else if (strcasecmp(kw, "clip") == 0) {
-			if (n != 2 || (strcasecmp(tok[1], "on") != 0 && strcasecmp(tok[1], "off") != 0))
-				lex_error(lx, "clip: expected \"clip on\" or \"clip off\"");
-			in->clip = strcasecmp(tok[1], "on") == 0;
-		} else if (strcasecmp(kw, "window") == 0 && n >= 2 && strcasecmp(tok[1], "auto") == 0) {
-			in->margin = -1;
-			if (n == 4 && strcasecmp(tok[2], "margin") == 0) {
-				in->margin = number(lx, kw, "a margin in micrometres", tok[3]);
-				if (in->margin < 0)
-					lex_error(lx, "window auto: the margin must not be negative");
-			} else if (n != 2) {
-				lex_error(lx, "window: expected \"window auto [margin m]\"");
-			}
-			in->window_auto = 1;
-			have_window = 1;
-			window_line = lex_lineno(lx);
-		} else if (strcasecmp(kw, "window") == 0) {
-			in->window_auto = 0;
-			want(lx, kw, n, 4, 4, "window xmin xmax ymin ymax");
-			double w[4];
-			for (int i = 0; i < 4; i++)
-				w[i] = number(lx, kw, "a window bound", tok[i + 1]);
-			if (!(w[1] > w[0] && w[3] > w[2]))
-				lex_error(lx, "window: need xmax > xmin and ymax > ymin (zero area)");
-			in->mask.xmin = w[0];
-			in->mask.xmax = w[1];
-			in->mask.ymin = w[2];
-			in->mask.ymax = w[3];
-			have_window = 1;
-			window_line = lex_lineno(lx);
-		} else if (strcasecmp(kw, "grid") == 0) {
-			want(lx, kw, n, 2, 2, "grid nx ny");
-			long nx, ny;
-			if (!num_parse_count(tok[1], 2, SPLAT_MAX_GRID, &nx) ||
-			    !num_parse_count(tok[2], 2, SPLAT_MAX_GRID, &ny))
-				lex_error(lx, "grid: expected two counts from 2 to %d",
-					  SPLAT_MAX_GRID);
-			in->nx = (int)nx;
-			in->ny = (int)ny;
-		} else if (strcasecmp(kw, "contour") == 0) {
-			want(lx, kw, n, 1, 1, "contour FILE");
-			free(in->contour);
-			in->contour = xstrdup(tok[1]);
-			in->contour_set = 1;
-		} else if (strcasecmp(kw, "cutline") == 0) {
-			want(lx, kw, n, 6, 6, "cutline x1 y1 x2 y2 npts FILE");
-			struct splat_cutline c;
-			c.x1 = number(lx, kw, "x1", tok[1]);
-			c.y1 = number(lx, kw, "y1", tok[2]);
-			c.x2 = number(lx, kw, "x2", tok[3]);
-			c.y2 = number(lx, kw, "y2", tok[4]);
-			long np;
-			if (!num_parse_count(tok[5], 2, SPLAT_MAX_CUTPTS, &np))
-				lex_error(lx, "cutline: expected a point count from 2 to %d, "
-					  "found \"%.40s\"", SPLAT_MAX_CUTPTS, tok[5]);
-			c.npts = (int)np;
-			c.line = lex_lineno(lx);
-			xgrow(&in->cutlines, &ccap, (size_t)in->ncutlines + 1, sizeof c);
-			c.file = xstrdup(tok[6]);
-			in->cutlines[in->ncutlines++] = c;
-		} else {
+		if (!optics_statement(&r, kw, tok, n) && !mask_statement(&r, kw, tok, n) &&
+		    !output_statement(&r, kw, tok, n))
 			lex_error(lx, "unknown statement \"%.40s\"", kw);
-		}
 	}
 
 	/* whole-file checks */
-	if (!have_window)
+	if (!r.have_window)
 		lex_error(lx, "no window statement (the simulation cell is required)");
 	/* a source direction must propagate: sine sigma NA at most 1 (a
 	 * source of sigma 45 at NA 0.28 is light from beyond the horizon) */
@@ -559,18 +603,18 @@ struct splat_input *fmt_splat_read(const char *path)
 	if (smax * in->na > 1)
 		die("%s:%ld: the source reaches %g NA = %g, beyond the sine of 90 degrees "
 		    "(the largest source radius times NA must be at most 1)",
-		    lex_name(lx), source_line ? source_line : 1L, smax, smax * in->na);
+		    lex_name(lx), r.source_line ? r.source_line : 1L, smax, smax * in->na);
 	if (in->mask.nlayers || in->window_auto)
 		finish_layers(lx, in);
 	const struct splat_mask *m = &in->mask;
 	double sx = WINDOW_SLACK * (m->xmax - m->xmin);
 	double sy = WINDOW_SLACK * (m->ymax - m->ymin);
 	for (int i = 0; i < m->nrects; i++) {
-		const struct splat_rect *r = &m->rects[i];
-		if (r->x1 < m->xmin - sx || r->x2 > m->xmax + sx ||
-		    r->y1 < m->ymin - sy || r->y2 > m->ymax + sy)
+		const struct splat_rect *rc = &m->rects[i];
+		if (rc->x1 < m->xmin - sx || rc->x2 > m->xmax + sx ||
+		    rc->y1 < m->ymin - sy || rc->y2 > m->ymax + sy)
 			die("%s:%ld: rect is outside the window of line %ld",
-			    lex_name(lx), r->line, window_line);
+			    lex_name(lx), rc->line, r.window_line);
 	}
 	/* an image stack holds planes * nx * ny values: bound it as one grid */
 	if (in->planes &&

@@ -1,6 +1,6 @@
 /*
  * fmt_stack.h - the image stack: the aerial image at several depths inside
- * the resist, which splat writes for its resist statement (issue 11) and
+ * the resist, which splat writes for its resist statement and
  * bleach and contour read.  Text, one header line, then the planes top
  * first, each a depth line and a whole contour-file (fmt_contour.h):
  *

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/fuzz/targets/fuzz.sh - the libFuzzer harness of every file reader (issue 14).
+# tests/fuzz/targets/fuzz.sh - the libFuzzer harness of every file reader.
 #
 #   sh tests/fuzz/targets/fuzz.sh build DIR          build DIR/fuzz_READER for each reader
 #   sh tests/fuzz/targets/fuzz.sh run DIR SECONDS    build, then fuzz each reader SECONDS
