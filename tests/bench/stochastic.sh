@@ -38,6 +38,6 @@ run() { # run WHAT COMMAND...: one line of seconds and MB
 }
 v=$(awk -v n="$NX" 'BEGIN { printf "%.3g M voxels", n * n * 41 / 1e6 }')
 run "bleach, $NX x $NX x 41 ($v)" "$BUILD/bin/bleach" -o rate.bin lines.cont resist.in
-grep 'peb:\|stochastic:' log.txt | sed 's/^bleach: /stochastic: /'
+grep 'peb:\|stochastic:' log.txt | sed 's/^bleach: /stochastic:   /'
 run "etch -method fmm -et 20 -no2d" "$BUILD/bin/etch" -method fmm -et 20 -pt 20 -no2d rate.bin
-tail -n 1 log.txt | sed 's/^etch: /stochastic: /'
+tail -n 1 log.txt | sed 's/^etch: /stochastic:   /'
