@@ -23,7 +23,7 @@ usage() {
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
            (or -points F:D,F:D,... instead of -dose and -focus)
-           [-target CD -tol PCT] [-d DIR] [-j N] [-keep] [-n]
+           [-target CD -tol PCT] [-seeds K] [-d DIR] [-j N] [-keep] [-n]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
   -if FILE      splat input file (the mask and the optics)
@@ -36,6 +36,9 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
                 e.g. "-rel 10,90 -hole 0 0"; cd is at the first height
   -target CD    with -tol: the process window for this CD (um)
   -tol PCT      in spec when |cd - CD| <= PCT % of CD
+  -seeds K      K stochastic runs a point (bleach -seed 1..K; the resist
+                needs a stochastic statement): fem.dat holds the mean cd,
+                stoch.dat the mean, its 3 sigma and the failures
   -d DIR        the sweep's directory (default fem)
   -j N          points run at once (make -j N; default: the cores)
   -keep         keep every point's rate file and curves.plot
@@ -59,7 +62,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
 dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet=""
-etchopts="" points=""
+etchopts="" points="" seeds=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help|-h) usage; exit 0 ;;
@@ -72,6 +75,7 @@ while [ $# -gt 0 ]; do
 	-measure) need_val "$@"; margs=$2; shift 2 ;;
 	-target) need_val "$@"; target=$2; shift 2 ;;
 	-tol) need_val "$@"; tol=$2; shift 2 ;;
+	-seeds) need_val "$@"; seeds=$2; shift 2 ;;
 	-d) need_val "$@"; dir=$2; shift 2 ;;
 	-j) need_val "$@"; jobs=$2; shift 2 ;;
 	-keep) keep=yes; shift ;;
@@ -109,7 +113,7 @@ DRAWPLOT=$(findprog drawplot)
 
 # -collect: everything else is in DIR/Makefile
 if [ -n "$collect" ]; then
-	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts" ] ||
+	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds" ] ||
 		bad "-collect takes only -d, -target, -tol and -q: the sweep is in DIR/Makefile"
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
@@ -126,6 +130,10 @@ fi
 [ -n "$margs" ] || bad "-measure is required (e.g. -measure \"-rel 10 -hole 0 0\")"
 posnum "$etchtime" || badv "-et $etchtime: expected a positive time (s)"
 case $chunk in ''|*[!0-9]*|0*) badv "-chunk $chunk: expected a whole number >= 1" ;; esac
+if [ -n "$seeds" ]; then
+	case $seeds in ''|*[!0-9]*|0*) badv "-seeds $seeds: expected a whole number from 1 to 1000" ;; esac
+	[ "$seeds" -le 1000 ] || badv "-seeds $seeds: expected a whole number from 1 to 1000"
+fi
 if [ -n "$jobs" ]; then
 	case $jobs in ''|*[!0-9]*|0*) badv "-j $jobs: expected a whole number >= 1" ;; esac
 else
@@ -195,6 +203,8 @@ MEASURE=$(findprog measure)
 command -v make >/dev/null 2>&1 || die "cannot find make (GNU make runs the sweep)"
 "$SPLAT" --help 2>&1 | grep -q -- -defocus || die "$SPLAT has no -defocus: this splat cannot sweep focus"
 "$BLEACH" --help 2>&1 | grep -q -- -dose || die "$BLEACH has no -dose: this bleach cannot sweep dose"
+[ -z "$seeds" ] || "$BLEACH" --help 2>&1 | grep -q -- -seed ||
+	die "$BLEACH has no -seed: this bleach cannot run -seeds"
 
 # check every stage's arguments before anything runs: the inputs through
 # femwin -probe (the library's readers), etch's options on a missing file
@@ -204,6 +214,11 @@ chk=$(mktemp -d "${TMPDIR:-/tmp}/fem.XXXXXX") || die "cannot make a temporary di
 trap 'rm -rf "$chk"' EXIT
 "$FEMWIN" -probe "$mask" "$resist" -o "$chk/probe.plot" 2>"$chk/err" ||
 	die "$(sed -n '1{s/^femwin: //;p;}' "$chk/err")"
+# -seeds: the runs differ only by bleach -seed, which needs the resist's
+# stochastic statement (bleach(5)); looked for before any run (bleach
+# itself would refuse every point)
+[ -z "$seeds" ] || grep -qi '^[[:space:]]*stochastic[[:space:]]' "$resist" ||
+	badv "-seeds $seeds: $resist has no stochastic statement (bleach(5)): every seed would give the same run"
 st=0
 # shellcheck disable=SC2086 # etchopts is a list of words on purpose
 "$ETCH" -q -et "$etchtime" $etchopts "$chk/no-such-rate-file" >/dev/null 2>"$chk/err" || st=$?
@@ -235,6 +250,13 @@ echo "$margs" | put measure.opts
 
 fname() { echo "f$1"; }
 dname() { echo "d$1"; }
+# runs POINT-DIR: the directories of a point's runs (one per seed with -seeds)
+runs() {
+	if [ -z "$seeds" ]; then echo "$1"; else
+		_s=1
+		while [ $_s -le "$seeds" ]; do echo "$1/s$_s"; _s=$((_s + 1)); done
+	fi
+}
 {
 cat <<'S'
 #!/bin/sh
@@ -276,15 +298,17 @@ S
 	echo ".DELETE_ON_ERROR:"
 	echo ".PHONY: all images collect"
 	printf 'all:'
-	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue; printf ' %s/%s/measure.dat' "$(fname "$f")" "$(dname "$d")"; done; done
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
+		for R in $(runs "$(fname "$f")/$(dname "$d")"); do printf ' %s/measure.dat' "$R"; done
+	done; done
 	echo
 	printf 'images:'
 	for f in $fvals; do printf ' %s/image.cont' "$(fname "$f")"; done
 	echo
 	# intermediates: not rebuilt when a point's measure.dat is up to date
 	printf '.SECONDARY:'
-	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
-		printf ' %s/%s/rate %s/%s/curves.plot' "$(fname "$f")" "$(dname "$d")" "$(fname "$f")" "$(dname "$d")"
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
+		for R in $(runs "$(fname "$f")/$(dname "$d")"); do printf ' %s/rate %s/curves.plot' "$R" "$R"; done
 	done; done
 	echo
 	for f in $fvals; do
@@ -293,24 +317,28 @@ S
 		echo "$F/image.cont: mask.in resist.in"
 		printf '\t@mkdir -p %s\n' "$F"
 		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
-		for d in $dvals; do inpts "$f" "$d" || continue
-			P=$F/$(dname "$d")
+		for d in $dvals; do inpts "$f" "$d" || continue; for P in $(runs "$F/$(dname "$d")"); do
+			seed="" what="focus $f dose $d"
+			[ -z "$seeds" ] || { seed=" -seed ${P##*/s}" what="$what seed ${P##*/s}"; }
 			echo "$P/rate: $F/image.cont resist.in"
 			printf '\t@mkdir -p %s\n' "$P"
-			printf '\t@$(RUN) %s/bleach.log "focus %s dose %s: bleach" $@ $(BLEACH) -q -dose %s -o $@ %s/image.cont resist.in\n' "$P" "$f" "$d" "$d" "$F"
+			printf '\t@$(RUN) %s/bleach.log "%s: bleach" $@ $(BLEACH) -q -dose %s%s -o $@ %s/image.cont resist.in\n' "$P" "$what" "$d" "$seed" "$F"
 			echo "$P/curves.plot: $P/rate etch.opts"
-			printf '\t@$(RUN) %s/etch.log "focus %s dose %s: etch" $@ $(ETCH) -q $(ETCHOPTS) -o $@ %s/rate\n' "$P" "$f" "$d" "$P"
+			printf '\t@$(RUN) %s/etch.log "%s: etch" $@ $(ETCH) -q $(ETCHOPTS) -o $@ %s/rate\n' "$P" "$what" "$P"
 			echo "$P/measure.dat: $P/curves.plot measure.opts"
-			printf '\t@$(RUN) %s/measure.log "focus %s dose %s: measure" $@ $(MEASURE) $(MEASUREARGS) -o $@ %s/curves.plot\n' "$P" "$f" "$d" "$P"
+			printf '\t@$(RUN) %s/measure.log "%s: measure" $@ $(MEASURE) $(MEASUREARGS) -o $@ %s/curves.plot\n' "$P" "$what" "$P"
 			printf '\t@$(CLEAN) %s/rate %s/curves.plot %s/curves.plot.2D\n' "$P" "$P" "$P"
-		done
+		done; done
 	done
 	echo
 	echo "# the tables and plots, from whatever points have finished"
 	echo "collect:"
 	printf '\t@st=0; $(FEMWIN) -collect -o fem.dat -bossung bossung.2D -template bossung.tpl'
-	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
-		printf ' \\\n\t  -p %s %s %s/%s/measure.dat' "$f" "$d" "$(fname "$f")" "$(dname "$d")"
+	[ -z "$seeds" ] || printf ' -stochastic stoch.dat'
+	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
+		for R in $(runs "$(fname "$f")/$(dname "$d")"); do
+			printf ' \\\n\t  -p %s %s %s/measure.dat' "$f" "$d" "$R"
+		done
 	done; done
 	printf ' || st=$$?; \\\n'
 	printf '\t[ -s fem.dat ] || exit 1; \\\n'
@@ -331,7 +359,8 @@ S
 
 if [ -n "$slurm" ]; then
 	# one array task per chunk of points; the images first, as their own array
-	ntask=$(( (npts + chunk - 1) / chunk ))
+	nruns=$((npts * ${seeds:-1}))
+	ntask=$(( (nruns + chunk - 1) / chunk ))
 	{
 		echo "#!/bin/sh"
 		echo "# The points of $dir as a Slurm job array, written by fem(1);"
@@ -344,14 +373,14 @@ if [ -n "$slurm" ]; then
 		echo "cd $dir"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		k=0 t=0 line=""
-		for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue
-			line="$line $(fname "$f")/$(dname "$d")/measure.dat"
+		for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue; for R in $(runs "$(fname "$f")/$(dname "$d")"); do
+			line="$line $R/measure.dat"
 			k=$((k + 1))
 			if [ $k -eq "$chunk" ]; then
 				echo "$t) set --$line ;;"
 				t=$((t + 1)) k=0 line=""
 			fi
-		done; done
+		done; done; done
 		[ -z "$line" ] || echo "$t) set --$line ;;"
 		echo '*) echo "fem.sbatch: no task $SLURM_ARRAY_TASK_ID" >&2; exit 1 ;;'
 		echo "esac"

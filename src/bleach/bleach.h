@@ -27,6 +27,7 @@ struct bleach_opts {
 	double level;           /* M of the -solid surface */
 	int have_dose;          /* -dose given: dose replaces the input's */
 	double dose;            /* mJ/cm2 */
+	long seed;              /* -seed: replaces the stochastic statement's; -1 if not given */
 };
 
 /* Reads, exposes, bakes and writes the rate array (and mxyz.solid.3D);
@@ -165,6 +166,7 @@ void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 struct peb_params {
 	double q0, kamp, p, kloss, kq;  /* car: -, 1/s, -, 1/s, 1/s */
 	double t, dh, dq;               /* peb: s, um2/s, um2/s */
+	int noisy;                      /* 1: h0 may exceed 1 (shot noise), else clamped */
 };
 void peb_params_from(struct peb_params *pp, const struct bleach_input *in);
 /* The exact reaction of one point over tau seconds: h and q replaced by
@@ -177,6 +179,10 @@ double peb_react(const struct peb_params *pp, double tau, double *h, double *q);
  * (NULL or nx ny nz values): the acid at the end of the bake. */
 void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 	     double dx, double dy, double dz, int nouter, int ninner, double *hout);
+/* peb_run with the quencher at the start given point by point (q0, same
+ * shape as f; NULL: pp->q0 everywhere). */
+void peb_run_field(const struct peb_params *pp, double *f, const double *q0, int nx, int ny,
+		   int nz, double dx, double dy, double dz, int nouter, int ninner, double *hout);
 /* The bake of ncol independent columns f[k * ncol + q] (no x-y
  * diffusion), in nsteps Strang steps. */
 void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz,
@@ -196,6 +202,27 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
 		     double dx, double dy, double dz, int n, double *change);
 #define PEB_OUTER_START 64
+
+/* ---- shotnoise.c: photon and acid shot noise (bleach.5 stochastic) ---- */
+
+/* What shotnoise_apply drew, for the progress line and the tests. */
+struct shotnoise_info {
+	double voxel_nm3;       /* dx dy dz */
+	double npag;            /* mean PAG molecules a voxel, G0 dx dy dz */
+	double photon_ev;       /* h c / lambda */
+	double yield;           /* PAG conversions per photon the fresh resist absorbs */
+	/* NULL, or arrays of the field's shape filled with the voxels' counts
+	 * (PAG, absorbed photons, acid, quencher) */
+	long *pag, *photons, *acid, *quencher;
+};
+/* h (nx ny nz values, [k * nx ny + j nx + i], x and y periodic with the
+ * last node repeating the first) holds the deterministic photoacid
+ * 1 - M of a grid of spacing dx dy dz (um); replaced by the acid drawn
+ * from the voxels' PAG, photons and acid (counts over the mean PAG count
+ * G0 dx dy dz).  Returns the relative quencher drawn the same way (a new
+ * array), or NULL without acid noise (q0 everywhere). */
+double *shotnoise_apply(const struct bleach_input *in, double *h, int nx, int ny, int nz,
+			double dx, double dy, double dz, struct shotnoise_info *info);
 
 /* ---- devrate.c: development-rate models (thesis 2.1, Table 9.1) ---- */
 

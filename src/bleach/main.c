@@ -21,8 +21,8 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-big]\n"
-	"              [-threads n] contour-file bleach-inputfile\n"
+	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-seed S]\n"
+	"              [-big] [-threads n] contour-file bleach-inputfile\n"
 	"       bleach -cutline [-ascii] [-o rate-file] [-q] cutline-plot bleach-inputfile\n"
 	"  -cutline       the first file is a cutline of splat (a 2D plot file): write the\n"
 	"                 2D rate array (ny = 1) over (distance along the cut, z) for etch2d\n"
@@ -32,6 +32,7 @@ static const char usage[] =
 	"  -o rate-file   name of the rate array file\n"
 	"  -q             no progress lines on stderr\n"
 	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n"
+	"  -seed S        the shot noise's seed, replacing the stochastic statement's\n"
 	"  -big           run work estimated beyond the limits (an hour, the\n"
 	"                 machine's memory; also SAMPLE3D_BIG=1)\n"
 	"  -threads n     threads to use (default $SAMPLE3D_THREADS, else every core)\n";
@@ -45,6 +46,7 @@ struct options {
 	double level;
 	const char *output;
 	const char *dose;       /* -dose value, checked after parsing */
+	long seed;              /* -seed value, -1 if not given */
 	const char *contour;
 	const char *input;
 };
@@ -56,6 +58,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
 	o->level = 0.8;
+	o->seed = -1;
 	while (a.i < argc) {
 		args_help_exit(&a, 1);
 		if (args_flag(&a, "-ascii"))
@@ -75,6 +78,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_str(&a, "-o", &o->output))
 			;
 		else if (args_str(&a, "-dose", &o->dose))
+			;
+		else if (args_int(&a, "-seed", 0, BLEACH_MAX_SEED, &o->seed))
 			;
 		else
 			args_operand(&a, (const char **[]){&o->contour, &o->input}, 2, "file");
@@ -103,7 +108,7 @@ int main(int argc, char **argv)
 	/* -dose D: the range of bleach(5)'s dose statement; a bad value is a
 	 * one-line usage error (sweep scripts read it in a log) */
 	struct bleach_opts b = {o.contour, o.input, o.output, o.ascii, o.solid, o.quiet,
-				o.level, o.dose != NULL, 0};
+				o.level, o.dose != NULL, 0, o.seed};
 	if (o.dose && (!num_parse(o.dose, &b.dose) || !(b.dose >= 0 && b.dose <= DOSE_MAX)))
 		die_status(EXIT_USAGE, "option -dose: expected a number from 0 to %g, found \"%.40s\"",
 			   DOSE_MAX, o.dose);

@@ -60,6 +60,7 @@ void peb_params_from(struct peb_params *pp, const struct bleach_input *in)
 	pp->t = in->peb_time;
 	pp->dh = in->dacid;
 	pp->dq = in->dquench;
+	pp->noisy = in->stochastic;
 }
 
 /* (e^{x} - 1) / x, 1 at x = 0 */
@@ -498,15 +499,22 @@ static void pass_blocks(void *ctx, size_t lo, size_t hi, int worker)
 void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 	     double dx, double dy, double dz, int nouter, int ninner, double *hout)
 {
+	peb_run_field(pp, f, NULL, nx, ny, nz, dx, dy, dz, nouter, ninner, hout);
+}
+
+void peb_run_field(const struct peb_params *pp, double *f, const double *q0, int nx, int ny,
+		   int nz, double dx, double dy, double dz, int nouter, int ninner, double *hout)
+{
 	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
 	double *H = f;          /* h0 in, m out */
 	double *Q = xreallocarray(NULL, np, sizeof *Q);
 	double *A = xcalloc(np, sizeof *A);
 	for (size_t k = 0; k < np; k++) {
-		Q[k] = pp->q0;
+		Q[k] = q0 ? q0[k] : pp->q0;
 		if (!(H[k] > 0))
 			H[k] = 0;
-		if (H[k] > 1)
+		/* a noisy acid (counts over the mean PAG count) may exceed one */
+		if (H[k] > 1 && !pp->noisy)
 			H[k] = 1;
 	}
 	int xy = (nx > 2 || ny > 2) && (pp->dh > 0 || pp->dq > 0);

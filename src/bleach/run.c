@@ -158,7 +158,9 @@ static const double T_PEB = 8e-8;
 static int car_refine(const struct bleach_input *in, int nz)
 {
 	double dz = in->thick / (nz - 1);
-	double target = in->wavelength / (2 * in->index) / PEB_Z_PER_PERIOD;
+	/* without standing waves only the acid diffusion sets the grid */
+	double target = in->standing ? in->wavelength / (2 * in->index) / PEB_Z_PER_PERIOD
+				     : HUGE_VAL;
 	double L = sqrt(2 * in->dacid * in->peb_time);
 	if (L > 0 && L / 4 < target)
 		target = L / 4;
@@ -168,6 +170,20 @@ static int car_refine(const struct bleach_input *in, int nz)
 	if (r > PEB_Z_MAX_REFINE)
 		r = PEB_Z_MAX_REFINE;
 	return (int)r;
+}
+
+/* The shot noise of the stochastic statement (shotnoise.c), with its
+ * progress line. */
+static double *shotnoise_report(const struct bleach_input *in, double *h, int nx, int ny,
+				int nz, double dx, double dy, double dz)
+{
+	struct shotnoise_info si = {0};
+	double *q = shotnoise_apply(in, h, nx, ny, nz, dx, dy, dz, &si);
+	progress("stochastic: seed %ld, photon noise %s, acid noise %s; voxels %.3g nm^3 of "
+		 "%.3g PAG, photons of %.4g eV, %.3g PAG converted per photon the resist absorbs",
+		 in->seed, in->noise_photons ? "on" : "off", in->noise_acid ? "on" : "off",
+		 si.voxel_nm3, si.npag, si.photon_ev, si.yield);
+	return q;
 }
 
 /* The post-exposure bake of a chemically amplified positive resist
@@ -187,10 +203,16 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 		    input, in->line_peb, n, change);
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
-	budget_check(input, what, (double)np * n * T_PEB, (double)np * 3 * sizeof(double));
+	/* h, q, the m integral, and the noisy quencher of a stochastic run */
+	budget_check(input, what, (double)np * n * T_PEB,
+		     (double)np * (3 + in->stochastic) * sizeof(double));
 	double change_xy;
 	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
-	peb_run(&pp, M, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
+	/* shot noise after the step choice: the counts are chosen for the
+	 * deterministic acid, the same for every seed */
+	double *q = in->stochastic ? shotnoise_report(in, M, nx, ny, nz, dx, dy, dz) : NULL;
+	peb_run_field(&pp, M, q, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
+	free(q);
 	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "
 		 "columns and slices within %.2g of the doubled counts", in->peb_time,
 		 sqrt(2 * in->dacid * in->peb_time), n, nouter,
@@ -222,6 +244,10 @@ static void read_inputs(struct run *u)
 	fmt_bleach_read(o->input, in);
 	if (o->have_dose)
 		in->dose = o->dose;
+	if (o->seed >= 0 && !in->stochastic)
+		die("-seed %ld: %s has no stochastic statement (bleach(5))", o->seed, o->input);
+	if (o->seed >= 0)
+		in->seed = o->seed;
 	if (st->is_stack)
 		stack_check(st, in, o->contour, o->input);
 	if (st->film)

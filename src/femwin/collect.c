@@ -108,8 +108,56 @@ static void write_bossung(const struct fem_table *t, const char *plot_path,
 	free(doses);
 }
 
+/* Points in (focus, dose) order, a merge sort: the seeds of a point keep
+ * the order they were given, so that their sums are made in one order. */
+static void sort_stable(struct fem_point *p, int n)
+{
+	struct fem_point *w = xreallocarray(NULL, (size_t)(n > 0 ? n : 1), sizeof *w);
+	for (int width = 1; width < n; width *= 2) {
+		for (int lo = 0; lo < n; lo += 2 * width) {
+			int mid = lo + width < n ? lo + width : n;
+			int hi = lo + 2 * width < n ? lo + 2 * width : n;
+			int a = lo, b = mid, k = lo;
+			while (a < mid || b < hi)
+				w[k++] = b >= hi || (a < mid && cmp_point(&p[a], &p[b]) <= 0) ? p[a++]
+											: p[b++];
+		}
+		memcpy(p, w, (size_t)n * sizeof *p);
+	}
+	free(w);
+}
+
+/* The seeds of one stochastic point, t->p[lo..hi): one fem.dat point
+ * (the mean of the seeds that printed) and its stoch.dat row. */
+static struct fem_point seeds_merge(const struct fem_point *p, int n, struct fem_stoch_row *r)
+{
+	struct fem_point m = {p[0].focus, p[0].dose, 0, 0, 1, 0};
+	double s = 0, s2 = 0, swa = 0, loss = 0;
+	int k = 0;
+	for (int i = 0; i < n; i++) {
+		m.cleared &= p[i].cleared;
+		loss += p[i].loss;
+		if (!(p[i].cd > 0) || !p[i].cleared)
+			continue;
+		s += p[i].cd;
+		swa += p[i].swa;
+		k++;
+	}
+	double mean = k ? s / k : 0;
+	for (int i = 0; i < n; i++)
+		if (p[i].cd > 0 && p[i].cleared)
+			s2 += (p[i].cd - mean) * (p[i].cd - mean);
+	m.cd = mean;
+	m.swa = k ? swa / k : NAN;
+	m.loss = loss / n;
+	*r = (struct fem_stoch_row){m.focus, m.dose, mean, k > 1 ? 3 * sqrt(s2 / (k - 1)) : 0,
+				    n - k, n};
+	return m;
+}
+
 int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
-		   const char *bossung_path, const char *template_path)
+		   const char *bossung_path, const char *template_path,
+		   const char *stoch_path)
 {
 	struct fem_table t = {0, NULL};
 	t.p = xreallocarray(NULL, (size_t)(n > 0 ? n : 1), sizeof *t.p);
@@ -138,7 +186,19 @@ int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
 		p->loss = m.resist_loss;
 		fmt_measure_free(&m);
 	}
-	qsort(t.p, (size_t)t.n, sizeof *t.p, cmp_point);
+	sort_stable(t.p, t.n);
+	struct fem_stoch_row *rows = NULL;
+	int nrows = 0;
+	if (stoch_path) {
+		rows = xreallocarray(NULL, (size_t)(t.n > 0 ? t.n : 1), sizeof *rows);
+		int w = 0;
+		for (int lo = 0, hi; lo < t.n; lo = hi) {
+			for (hi = lo + 1; hi < t.n && cmp_point(&t.p[lo], &t.p[hi]) == 0; hi++)
+				;
+			t.p[w++] = seeds_merge(t.p + lo, hi - lo, &rows[nrows++]);
+		}
+		t.n = w;
+	}
 	for (int i = 1; i < t.n; i++)
 		if (cmp_point(&t.p[i - 1], &t.p[i]) == 0)
 			die_status(EXIT_USAGE, "the point focus %g dose %g is given twice",
@@ -149,6 +209,17 @@ int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
 		    n > 0 ? in[0].table : "-");
 	}
 	fmt_fem_write(fem_path, &t);
+	if (stoch_path) {
+		fmt_fem_stoch_write(stoch_path, rows, nrows);
+		int nf = 0, ns = 0;
+		for (int i = 0; i < nrows; i++) {
+			nf += rows[i].failures;
+			ns += rows[i].seeds;
+		}
+		printf("stochastic: %d points, %d runs, %d failures (a feature absent or not "
+		       "cleared)\n", nrows, ns, nf);
+		free(rows);
+	}
 	if (bossung_path || template_path)
 		write_bossung(&t, bossung_path, template_path);
 	if (missing) {

@@ -16,9 +16,13 @@ struct femwin_input {
 
 /* Reads every table that exists, writes fem.dat (and, when given, the
  * Bossung plot file and its drawplot template); returns how many points
- * had no table. */
+ * had no table.  With stoch_path, the tables of one (focus, dose) given
+ * more than once are the seeds of a stochastic point: fem.dat holds
+ * their mean, stoch_path (stoch.dat) the mean, 3 sigma and failures;
+ * without it a point given twice is an error. */
 int femwin_collect(const struct femwin_input *in, int n, const char *fem_path,
-		   const char *bossung_path, const char *template_path);
+		   const char *bossung_path, const char *template_path,
+		   const char *stoch_path);
 
 struct femwin_spec {
 	double target;  /* um */

@@ -18,7 +18,7 @@ static const char usage[] =
 	"usage: femwin -target CD -tol PCT [-o window.dat] [-plot window.2D]\n"
 	"              [-region region.2D [-region-template file]] fem.dat\n"
 	"       femwin -collect [-o fem.dat] [-bossung bossung.2D] [-template file]\n"
-	"              -p focus dose measure-table ...\n"
+	"              [-stochastic stoch.dat] -p focus dose measure-table ...\n"
 	"       femwin -probe mask.in resist.in [-o probe.plot]\n"
 	"  -target CD       the CD in spec (um)\n"
 	"  -tol PCT         in spec when |cd - CD| <= PCT % of CD (and cleared)\n"
@@ -32,6 +32,8 @@ static const char usage[] =
 	"  -p f d table     one point: focus (um), dose (mJ/cm2), measure's table\n"
 	"  -bossung file    cd against focus, one curve per dose (2D plot file)\n"
 	"  -template file   drawplot template labelling the Bossung curves by dose\n"
+	"  -stochastic file a point given more than once holds seeds: fem.dat gets\n"
+	"                   their mean cd, file the mean, 3 sigma and failures\n"
 	"  -probe m r       the undeveloped resist of splat input m and bleach\n"
 	"                   input r as a surface, to try measure's arguments on\n";
 
@@ -41,7 +43,7 @@ struct options {
 	enum mode mode;
 	double target, tol;
 	int have_target, have_tol;
-	const char *out, *plot, *bossung, *template, *fem, *region, *region_tpl;
+	const char *out, *plot, *bossung, *template, *fem, *region, *region_tpl, *stoch;
 	const char *probe_mask, *probe_resist;
 	struct femwin_input *pts;
 	int npts;
@@ -102,7 +104,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			   args_str(&a, "-region", &o->region) ||
 			   args_str(&a, "-region-template", &o->region_tpl) ||
 			   args_str(&a, "-bossung", &o->bossung) ||
-			   args_str(&a, "-template", &o->template)) {
+			   args_str(&a, "-template", &o->template) ||
+			   args_str(&a, "-stochastic", &o->stoch)) {
 			;
 		} else {
 			args_operand(&a, (const char **[]){&o->fem}, 1, "fem.dat");
@@ -119,8 +122,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			args_error(&a, "-target and -tol must be positive");
 		if (!o->fem)
 			args_error(&a, "which fem.dat?");
-		if (o->bossung || o->template)
-			args_error(&a, "-bossung and -template belong to -collect");
+		if (o->bossung || o->template || o->stoch)
+			args_error(&a, "-bossung, -template and -stochastic belong to -collect");
 		if (o->region_tpl && !o->region)
 			args_error(&a, "-region-template goes with -region");
 		break;
@@ -133,7 +136,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			args_error(&a, "-plot and -region belong to the process window");
 		break;
 	case M_PROBE:
-		if (o->fem || o->plot || o->bossung || o->template || o->region || o->region_tpl)
+		if (o->fem || o->plot || o->bossung || o->template || o->region || o->region_tpl ||
+		    o->stoch)
 			args_error(&a, "-probe takes only -o");
 		break;
 	}
@@ -157,7 +161,7 @@ int main(int argc, char **argv)
 	}
 	case M_COLLECT:
 		status = femwin_collect(o.pts, o.npts, o.out ? o.out : "fem.dat", o.bossung,
-					o.template) ? EXIT_RUNTIME : 0;
+					o.template, o.stoch) ? EXIT_RUNTIME : 0;
 		break;
 	case M_PROBE:
 		femwin_probe(o.probe_mask, o.probe_resist, o.out ? o.out : "probe.plot");

@@ -39,7 +39,9 @@ static void roundtrip(const char *path)
 	    a.bake != b.bake || a.diffusion != b.diffusion || a.k0 != b.k0 ||
 	    a.have_car != b.have_car || a.kamp != b.kamp || a.kq != b.kq || a.q0 != b.q0 ||
 	    a.dacid != b.dacid || a.dquench != b.dquench || a.peb_time != b.peb_time ||
-	    a.model != b.model || a.par[4] != b.par[4]) {
+	    a.model != b.model || a.par[4] != b.par[4] || a.pag != b.pag ||
+	    a.stochastic != b.stochastic || a.seed != b.seed ||
+	    a.noise_photons != b.noise_photons || a.noise_acid != b.noise_acid) {
 		printf("FAIL round trip of %s\n", path);
 		failures++;
 	} else {
@@ -63,9 +65,10 @@ int main(void)
 		roundtrip(p);
 	}
 	/* the CA positive resists (car, peb; ARRHENIUS written back as its
-	 * value) and the notch model */
-	static const char *more[] = {"car-krf-lines", "car-arf-contact", "notch-iline"};
-	for (int i = 0; i < 3; i++) {
+	 * value; pag and stochastic in the EUV ones) and the notch model */
+	static const char *more[] = {"car-krf-lines", "car-arf-contact", "notch-iline",
+				     "euv-lines", "euv-contacts"};
+	for (int i = 0; i < 5; i++) {
 		char p[4096];
 		snprintf(p, sizeof p, "%s/examples/%s/resist.in", top, more[i]);
 		roundtrip(p);

@@ -93,7 +93,7 @@ static void closed_forms(void)
 	enum { NH = 4, NZ = 3 };
 	double f[NZ * NH], h[NZ * NH];
 	/* no quencher, no loss, p = 1, no diffusion */
-	struct peb_params a = {0, 0.7, 1, 0, 3, 45, 0, 0};
+	struct peb_params a = {0, 0.7, 1, 0, 3, 45, 0, 0, 0};
 	for (int k = 0; k < NZ; k++)
 		for (int i = 0; i < NH; i++)
 			f[k * NH + i] = h0s[i];
@@ -108,7 +108,7 @@ static void closed_forms(void)
 	check("q0 = 0, kloss = 0, p = 1: m = exp(-kamp h0 t)", e, 1e-12);
 
 	/* quenching, no loss, no diffusion */
-	struct peb_params b = {0.3, 0.4, 1, 0, 2, 20, 0, 0};
+	struct peb_params b = {0.3, 0.4, 1, 0, 2, 20, 0, 0, 0};
 	double eh = 0, ed = 0, em = 0;
 	for (int i = 0; i < NH; i++) {
 		double hh = h0s[i], q = b.q0, d = hh - q;
@@ -185,7 +185,7 @@ static void diffusion(void)
 				f[((size_t)k * ny + j) * nx + i] = 0.5 + 0.25 * cos(2 * M_PI * i / (nx - 1)) *
 					sin(2 * M_PI * j / (ny - 1) + 0.3) + 0.2 * cos(3.0 * k);
 	double total0 = 0, total1 = 0;
-	struct peb_params a = {0, 0.5, 1, 0, 4, 10, 2e-3, 1e-3};
+	struct peb_params a = {0, 0.5, 1, 0, 4, 10, 2e-3, 1e-3, 0};
 	for (int pass = 0; pass < 2; pass++) {
 		double s = 0;
 		const double *g = pass ? h : f;
@@ -209,7 +209,7 @@ static void diffusion(void)
 	np = (size_t)nx * ny * nz;
 	f = malloc(np * sizeof *f), h = malloc(np * sizeof *h);
 	double L = 0.5, kx = 2 * M_PI / L;
-	struct peb_params b = {0, 0.5, 1, 0, 4, 5, 2e-3, 0};
+	struct peb_params b = {0, 0.5, 1, 0, 4, 5, 2e-3, 0, 0};
 	for (size_t q = 0; q < np; q++) {
 		int i = (int)(q % nx);
 		f[q] = 0.5 + 0.3 * cos(kx * i * L / (nx - 1));
@@ -230,7 +230,7 @@ static void diffusion(void)
 	nz = 401;
 	T = 0.4;
 	f = malloc((size_t)nz * sizeof *f), h = malloc((size_t)nz * sizeof *h);
-	struct peb_params c = {0, 0.5, 1, 0, 4, 20, 1e-3, 0};
+	struct peb_params c = {0, 0.5, 1, 0, 4, 20, 1e-3, 0, 0};
 	double kz = M_PI / T;
 	for (int k = 0; k < nz; k++)
 		f[k] = 0.5 + 0.3 * cos(kz * k * T / (nz - 1));
@@ -371,7 +371,7 @@ static void independent(int slice)
 	const double T = 0.21, L = slice ? 0.36 : 0;
 	const int N = slice ? 64 : 96, refine = 8;
 	const int px = slice ? 16 : 1, nzr = N + 1, nzf = refine * N + 1;
-	struct peb_params pp = {0.2, 0.5, 1, 0.002, 5, 30, 1e-5, 2e-6};
+	struct peb_params pp = {0.2, 0.5, 1, 0.002, 5, 30, 1e-5, 2e-6, 0};
 	/* reference */
 	double *Dz = cosine_d2(nzr, T), *Dx = fourier_d2(px, L > 0 ? L : 1);
 	struct mol m = {px, nzr, Dx, Dz, pp, NULL};
@@ -415,7 +415,7 @@ static double ripple(double Dh)
 	for (int k = 0; k < nz; k++)
 		for (int i = 0; i < nx; i++)
 			f[(size_t)k * nx + i] = acid0(L * i / px, L, T * k / (nz - 1));
-	struct peb_params pp = {0.2, 0.5, 1, 0.002, 5, 30, Dh, 0.1 * Dh};
+	struct peb_params pp = {0.2, 0.5, 1, 0.002, 5, 30, Dh, 0.1 * Dh, 0};
 	peb_run(&pp, f, nx, 1, nz, L / px, 1, T / (nz - 1), 32, 4, NULL);
 	/* the wall: where m crosses 0.5 going from x = 0 (bright, m low)
 	 * toward x = L/2 (dark), linear between nodes; the ripple is its

@@ -22,7 +22,7 @@
 
 /* Statements, for "given twice" and "missing" checks. */
 enum { S_WAVE, S_AMB, S_RESIST, S_SUB, S_DOSE, S_BAKE, S_DEV, S_GRID,
-       S_SW, S_XLINK, S_CAR, S_PEB, S_COUNT };
+       S_SW, S_XLINK, S_CAR, S_PEB, S_STOCH, S_COUNT };
 
 /* A value of car or peb written ARRHENIUS(A Ea): evaluated once the
  * whole file is read, at peb's temperature. */
@@ -245,6 +245,10 @@ static void st_crosslink(struct parser *p, char **t, int nt)
 #define CAR_MAX_Q0 10.0
 #define CAR_MAX_ORDER 10.0
 #define CAR_MAX_TIME 1e4        /* s */
+/* PAG concentration, molecules per nm^3: resists hold 0.05 to 1; the
+ * bounds only keep the voxel counts finite and positive. */
+#define CAR_MIN_PAG 1e-6
+#define CAR_MAX_PAG 1e3
 
 /* A rate or diffusivity of car or peb: a number, or ARRHENIUS(A Ea) (the
  * parenthesis may hold spaces: "ARRHENIUS( 1e8 0.9 )").  Consumes the
@@ -328,9 +332,15 @@ static void st_car(struct parser *p, char **t, int nt)
 			rate_value(p, t, nt, &i, ARR_KQ, &in->kq, CAR_MAX_RATE,
 				   "car quenching kq (1/s)");
 			got |= 16;
+		} else if (strcasecmp(kw, "pag") == 0) {
+			if (got & 32)
+				lex_error(p->lx, "car: pag given twice");
+			in->pag = number(p, i < nt ? t[i] : NULL, "car pag G0 (molecules per nm^3)",
+					 CAR_MIN_PAG, CAR_MAX_PAG);
+			i++; got |= 32;
 		} else {
 			lex_error(p->lx, "car: unknown word \"%.40s\" (expected quencher, amplification, "
-				  "order, loss or quenching)", kw);
+				  "order, loss, quenching or pag)", kw);
 		}
 	}
 	static const char *names[] = {"quencher", "amplification", "order", "loss", "quenching"};
@@ -372,6 +382,41 @@ static void st_peb(struct parser *p, char **t, int nt)
 		if (!(got & (1 << b)))
 			lex_error(p->lx, "peb: missing %s", names[b]);
 	in->line_peb = lex_lineno(p->lx);
+}
+
+/* stochastic seed S [photons on|off] [acid on|off] */
+static void st_stochastic(struct parser *p, char **t, int nt)
+{
+	struct bleach_input *in = p->in;
+	int got = 0;
+	in->noise_photons = in->noise_acid = 1;
+	for (int i = 1; i < nt; i += 2) {
+		const char *kw = t[i], *v = i + 1 < nt ? t[i + 1] : NULL;
+		int bit = strcasecmp(kw, "seed") == 0 ? 1 : strcasecmp(kw, "photons") == 0 ? 2 :
+			  strcasecmp(kw, "acid") == 0 ? 4 : 0;
+		if (!bit)
+			lex_error(p->lx, "stochastic: unknown word \"%.40s\" (expected seed, photons "
+				  "or acid)", kw);
+		if (got & bit)
+			lex_error(p->lx, "stochastic: %s given twice", kw);
+		got |= bit;
+		if (bit == 1) {
+			in->seed = count(p, v, "stochastic seed", 0, BLEACH_MAX_SEED);
+			continue;
+		}
+		if (!v)
+			lex_error(p->lx, "stochastic: %s: expected on or off", kw);
+		int on = strcasecmp(v, "on") == 0;
+		if (!on && strcasecmp(v, "off") != 0)
+			lex_error(p->lx, "stochastic: %s: expected on or off, found \"%.40s\"", kw, v);
+		*(bit == 2 ? &in->noise_photons : &in->noise_acid) = on;
+	}
+	if (!(got & 1))
+		lex_error(p->lx, "stochastic: missing seed");
+	if (!in->noise_photons && !in->noise_acid)
+		lex_error(p->lx, "stochastic: photons and acid both off draw nothing");
+	in->stochastic = 1;
+	in->line_stochastic = lex_lineno(p->lx);
 }
 
 static void st_grid(struct parser *p, char **t, int nt)
@@ -449,6 +494,9 @@ static void statement(struct parser *p, char **t, int nt)
 	} else if (strcasecmp(kw, "peb") == 0) {
 		once(p, S_PEB, "peb");
 		st_peb(p, t, nt);
+	} else if (strcasecmp(kw, "stochastic") == 0) {
+		once(p, S_STOCH, "stochastic");
+		st_stochastic(p, t, nt);
 	} else if (strcasecmp(kw, "grid") == 0) {
 		once(p, S_GRID, "grid");
 		st_grid(p, t, nt);
@@ -505,6 +553,9 @@ static void parse(struct lex *lx, struct bleach_input *in)
 	if (p.seen[S_PEB] && !p.seen[S_CAR])
 		die("%s:%ld: peb needs a car statement (the resist's reaction constants)",
 		    lex_name(lx), p.seen[S_PEB]);
+	if (p.seen[S_STOCH] && !(p.seen[S_CAR] && in->pag > 0))
+		die("%s:%ld: stochastic needs the PAG concentration: a car statement with pag G0",
+		    lex_name(lx), p.seen[S_STOCH]);
 	if (p.seen[S_CAR]) {
 		in->have_car = 1;
 		if (p.seen[S_BAKE])
@@ -634,6 +685,8 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 		kv(f, "order", in->porder);
 		kv(f, "loss", in->kloss);
 		kv(f, "quenching", in->kq);
+		if (in->pag > 0)
+			kv(f, "pag", in->pag);
 		fputs("\npeb", f);
 		kv(f, "time", in->peb_time);
 		kv(f, "dacid", in->dacid);
@@ -642,6 +695,9 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 			kv(f, "temperature", in->peb_temp);
 		fputc('\n', f);
 	}
+	if (in->stochastic)
+		fprintf(f, "stochastic seed %ld photons %s acid %s\n", in->seed,
+			in->noise_photons ? "on" : "off", in->noise_acid ? "on" : "off");
 	if (in->nx > 0)
 		fprintf(f, "grid nx %d ny %d nz %d\n", in->nx, in->ny, in->nz);
 	else

@@ -36,6 +36,9 @@ enum {
 	BLEACH_MAX_NZ = 100000,     /* points through the thickness */
 	BLEACH_MAX_NXY = 100000     /* resampled x or y points */
 };
+/* Largest seed of the stochastic statement: 2^53 - 1, so that any seed
+ * is written back exactly. */
+#define BLEACH_MAX_SEED 9007199254740991L
 
 /* Development-rate models (devrate.c). */
 enum bleach_model {
@@ -90,6 +93,14 @@ struct bleach_input {
 	double dacid, dquench;      /* diffusivities, um2/s */
 	double peb_temp;            /* Celsius; NaN when not given */
 	long line_car, line_peb;
+	/* shot noise (bleach.5 stochastic): the PAG concentration of the car
+	 * statement's pag pair, molecules per nm^3 (0: not given), and the
+	 * stochastic statement's seed and switches */
+	double pag;
+	int stochastic;             /* the stochastic statement is there */
+	long seed;                  /* 0 to BLEACH_MAX_SEED */
+	int noise_photons, noise_acid;
+	long line_stochastic;
 	int nx, ny, nz;             /* 0 for nx, ny: the contour-file's grid */
 	long line_nz;               /* line of the grid statement (0: default) */
 	long line_dose;             /* line of the dose statement */

@@ -183,3 +183,14 @@ void fmt_fem_window_write(const char *path, const struct fem_window_row *r, int 
 	}
 	aout_commit(a);
 }
+
+void fmt_fem_stoch_write(const char *path, const struct fem_stoch_row *r, int n)
+{
+	struct aout *a = aout_open(path);
+	fputs("# focus dose cd cd_3sigma failures seeds\n", a->f);
+	for (int i = 0; i < n; i++) {
+		double v[6] = {r[i].focus, r[i].dose, r[i].cd, r[i].cd3s, r[i].failures, r[i].seeds};
+		num_print_row(a->f, v, 6);
+	}
+	aout_commit(a);
+}

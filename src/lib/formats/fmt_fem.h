@@ -59,4 +59,18 @@ struct fem_window_row {
 };
 void fmt_fem_window_write(const char *path, const struct fem_window_row *r, int n);
 
+/* One row of stoch.dat (fem(5); fem -seeds): a point's seeds,
+ *
+ *     # focus dose cd cd_3sigma failures seeds
+ *
+ * cd the mean over the seeds that printed, cd_3sigma three of their
+ * sample standard deviations (0 with fewer than two), failures the seeds
+ * where the feature was absent (cd 0) or did not clear, seeds the seeds
+ * with a result. */
+struct fem_stoch_row {
+	double focus, dose, cd, cd3s;
+	int failures, seeds;
+};
+void fmt_fem_stoch_write(const char *path, const struct fem_stoch_row *r, int n);
+
 #endif
