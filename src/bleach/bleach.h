@@ -27,6 +27,8 @@ struct bleach_opts {
 	double level;           /* M of the -solid surface */
 	int have_dose;          /* -dose given: dose replaces the input's */
 	double dose;            /* mJ/cm2 */
+	int nz;                 /* -nz: points through the resist, replacing the
+				   input's grid nz (0: the input's) */
 };
 
 /* Reads, exposes, bakes and writes the rate array (and mxyz.solid.3D);

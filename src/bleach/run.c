@@ -222,6 +222,16 @@ static void read_inputs(struct run *u)
 	fmt_bleach_read(o->input, in);
 	if (o->have_dose)
 		in->dose = o->dose;
+	if (o->nz) {
+		/* -nz: the grid statement's nz, with the file's check that the
+		 * standing waves are sampled (two points a period) */
+		in->nz = o->nz;
+		double period = in->wavelength / (2 * in->index);
+		if (in->standing && in->thick / (in->nz - 1) > period / 2)
+			die_status(EXIT_USAGE, "option -nz %d: %g um a point through %g um of "
+				   "resist, more than half the standing-wave period %g um",
+				   in->nz, in->thick / (in->nz - 1), in->thick, period);
+	}
 	if (st->is_stack)
 		stack_check(st, in, o->contour, o->input);
 

@@ -22,6 +22,11 @@ struct options {
 	const char *out;        /* table, "-" stdout */
 	const char *plot;       /* 2D plot file or NULL */
 	int force;              /* measure a surface with crossings */
+	/* -accuracy P|check with -coarse TABLE [-ratio R]: the err column */
+	const char *coarse;     /* the table measured on the coarser solve */
+	double accuracy;        /* percent; 0 for check (estimate only) */
+	int have_accuracy;
+	double ratio;           /* coarse / fine grid spacing (default 2) */
 	const char *input;
 };
 
@@ -33,6 +38,7 @@ struct row {
 	 * space/line: the ends of the interval along the axis */
 	double a, b, c;
 	int edge;               /* the feature reaches the box edge here */
+	double err;             /* um, the estimated discretisation error */
 };
 
 struct result {
@@ -43,12 +49,18 @@ struct result {
 	double swa;             /* degrees */
 	double resist_loss;     /* um */
 	int cleared;
+	int have_err;           /* err estimated (-accuracy) */
 };
 
 /* Measures the feature of o on surface s at every height (heights in um,
  * in the box). */
 void measure_feature(const struct surf *s, const struct options *o,
 		     const double *z, struct result *r);
+
+/* accuracy.c: the Richardson estimate of each row's discretisation
+ * error from the coarse table; returns the number of rows whose estimate
+ * is over o->accuracy percent of their cd (0 for check). */
+int accuracy_estimate(const struct options *o, struct result *r);
 
 /* The table on o->out, and the plot file if o->plot. */
 void report_table(const struct options *o, const struct result *r);
