@@ -9,8 +9,9 @@
 # read off the reference's own levels (accuracy/*.dat: the first whose
 # every err is within 1 % of its cd, which is what -accuracy 1 stops at),
 # so the reference costs no second fast-marching run.  Prints one line per
-# case and engine: the grid, the three CDs, the estimated err of the
-# largest, the largest error against the reference (%), the wall time.
+# case and engine: the grid, the three CDs, the largest estimated err
+# (% of its cd), the largest error against the reference (%), the wall
+# time; then the CDs of every level each run solved.
 # Asserts nothing.
 #
 # Environment: ACCURACY_CASES, the cases to run (default all, cheapest
@@ -108,5 +109,11 @@ for c in ${ACCURACY_CASES:-ca-lines clear-lines-2 contact-bake contact-nobake hi
 	else
 		echo "$c ray: failed: $(tail -n 1 "$tmp/$c-ray/err.txt")"
 	fi
+	# every level of both runs (docs/accuracy.md's tables of levels)
+	for r in ref ray; do
+		for t in $(ls -tr "$tmp/$c-$r"/accuracy/*.dat 2>/dev/null); do
+			printf '%-15s %-8s %-12s %-28s\n' "$c" "$r-level" "$(grid "$t")" "$(cds "$t")"
+		done
+	done
 	rm -rf "${tmp:?}/$c-ref" "${tmp:?}/$c-ray"
 done
