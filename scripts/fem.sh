@@ -356,6 +356,8 @@ S
 	echo
 	printf 'images:'
 	for f in $fvals; do printf ' %s/image.cont' "$(fname "$f")"; done
+	# -accuracy: the coarse images too, made once per focus before the points
+	[ -z "$accuracy" ] || for f in $fvals; do printf ' %s/image-coarse.cont' "$(fname "$f")"; done
 	echo
 	# intermediates: not rebuilt when a point's measure.dat is up to date
 	printf '.SECONDARY:'
@@ -457,7 +459,10 @@ if [ -n "$slurm" ]; then
 		echo "cd $dir"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		t=0
-		for f in $fvals; do echo "$t) set -- $(fname "$f")/image.cont ;;"; t=$((t + 1)); done
+		for f in $fvals; do
+			echo "$t) set -- $(fname "$f")/image.cont${accuracy:+ $(fname "$f")/image-coarse.cont} ;;"
+			t=$((t + 1))
+		done
 		echo '*) echo "images.sbatch: no task $SLURM_ARRAY_TASK_ID" >&2; exit 1 ;;'
 		echo "esac"
 		echo 'exec make -s --no-print-directory "$@"'
