@@ -135,6 +135,7 @@ accuracy_loop() {
 	while :; do
 		# shellcheck disable=SC2086 # acc_base is three words on purpose
 		acc_grid=$(acc_grid $acc_base "$acc_k")
+		# shellcheck disable=SC2086 # the grid is three words on purpose
 		set -- $acc_grid
 		acc_table=$acc_dir/$1x$2x$3.dat
 		acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||

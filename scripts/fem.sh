@@ -235,9 +235,10 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	set -- $1 "$2"
 	say "accuracy: focus $nomf dose $nomd: splat -grid $1 $2, bleach -nz $3"
-	"$SPLAT" -q -defocus "$nomf" -grid "$1" "$2" -o "$dir/accuracy/image.cont" "$dir/mask.in" &&
+	"$SPLAT" -q -defocus "$nomf" -grid "$1" "$2" -o "$dir/accuracy/image.cont" \
+		"$dir/mask.in" || return 1
 	"$BLEACH" -q -dose "$nomd" -nz "$3" -o "$dir/accuracy/rate" "$dir/accuracy/image.cont" \
-		"$dir/resist.in" &&
+		"$dir/resist.in" || return 1
 	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
 	"$ETCH" -q -et "$etchtime" $4 -no2d -o "$dir/accuracy/curves.plot" "$dir/accuracy/rate" ||
 		return 1
@@ -336,6 +337,7 @@ S
 	echo "MEASUREARGS = $margs"
 	# -accuracy: the grids of the points and of their coarse solves
 	if [ -n "$accuracy" ]; then
+		# shellcheck disable=SC2086 # two grids of three words on purpose
 		set -- $grid $cgrid
 		echo "SPLATGRID = -grid $1 $2"
 		echo "BLEACHNZ = -nz $3"
