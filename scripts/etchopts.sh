@@ -2,6 +2,8 @@
 # by sample3D and fem (installed beside them) so that both parse the same
 # list and print the same usage lines for it; a change of etch's
 # pass-through options is made here once.  See etch(1) for what each does.
+# The two drivers' other shared rules are here too: the engine they
+# measure with by default, and -accuracy (the grid refinement).
 #
 #   etchopts=""
 #   ... case $1 in
@@ -38,4 +40,125 @@ etchopts_usage() {
               -linear -no2d
               -etch "OPTS" passes any other etch options verbatim
 U
+}
+
+# ---- the engine the drivers measure with by default ----
+#
+# etch_engine_default: when $etchopts names no engine (no -method, in
+# -etch "OPTS" either) and no option of the ray-string alone (-deloop,
+# -dt, -seg, -smax, -smin, -rl, -clip, -linear), appends -method fmm:
+# fast marching gives a surface without crossings, which measure reads,
+# where the thesis' ray-string leaves loops measure refuses unless
+# delooped.  The ray-string stays one option away (-method ray).
+etch_engine_default() {
+	for w in $etchopts; do
+		case $w in
+		-method|-deloop|-dt|-seg|-smax|-smin|-rl|-clip|-linear) return 0 ;;
+		esac
+	done
+	etchopts="$etchopts -method fmm"
+}
+
+# ---- -accuracy P|check: the grid that holds every CD within P % ----
+#
+# The resolution is the image grid (splat -grid), the points through the
+# resist (bleach -nz) and etch's resolution, which follows the rate grid
+# by default (-seg at most its x-y spacing, -dt from -seg, fast marching
+# on the rate grid); a -seg or -dt given is scaled with the grid.  Level
+# 0 is the inputs' grids (femwin -resolution), level -1 about twice their
+# spacing, level k > 0 2^k times finer.  Each level is solved once and
+# measured; from level 0 on, measure -accuracy compares it with the level
+# before (measure(1) ACCURACY: Richardson, order 1 assumed) and writes
+# the err column.  P: refine until every err is under P % of its cd (at
+# most ACC_MAX_LEVEL); check: levels -1 and 0 only, the estimate of the
+# inputs' own grid.
+ACC_MAX_LEVEL=3
+
+# accuracy_opt ARGS...: when $1 is -accuracy, sets $accuracy to its
+# value (P, check, or 1 when no value follows: the default percentage),
+# sets etchopt_n to the words it took and returns 0; otherwise returns 1;
+# a bad value is a usage error through the driver's bad
+accuracy_opt() {
+	[ "$1" = -accuracy ] || return 1
+	case ${2:-} in
+	[0-9.]*|check)
+		accuracy_value "$2" ||
+			bad "-accuracy $2: expected a percentage between 0 and 100, or check"
+		accuracy=$2 etchopt_n=2 ;;
+	*) accuracy=1 etchopt_n=1 ;;
+	esac
+	return 0
+}
+
+# accuracy_value WORD: "check", or a percentage between 0 and 100
+accuracy_value() {
+	[ "$1" = check ] && return 0
+	printf '%s\n' "$1" | grep -Eq '^([0-9]+\.?[0-9]*|\.[0-9]+)$' &&
+		awk -v v="$1" 'BEGIN { exit !(v > 0 && v < 100) }'
+}
+
+# acc_grid NX NY NZ K: the counts of level K, "nx ny nz"
+acc_grid() {
+	awk -v nx="$1" -v ny="$2" -v nz="$3" -v k="$4" '
+	function g(n) { return k < 0 ? int(n / 2) + 1 : (n - 1) * 2 ^ k + 1 }
+	BEGIN { print g(nx), g(ny), g(nz) }'
+}
+
+# acc_ratio "NX NY NZ" "NX NY NZ": the coarse grid's spacing over the
+# fine one's, the smallest of the three (the larger estimate)
+acc_ratio() {
+	awk -v c="$1" -v f="$2" 'BEGIN {
+		split(c, C, " "); split(f, F, " "); r = 0
+		for (i = 1; i <= 3; i++) { q = (F[i] - 1) / (C[i] - 1); if (r == 0 || q < r) r = q }
+		printf "%.10g\n", r }'
+}
+
+# acc_etchopts F: $etchopts with the values of -seg and -dt times F
+acc_etchopts() {
+	printf '%s\n' "$etchopts" | awk -v f="$1" '{
+		for (i = 1; i <= NF; i++) {
+			if (($i == "-seg" || $i == "-dt") && i < NF) { printf " %s %.10g", $i, $(i + 1) * f; i++ }
+			else printf " %s", $i
+		} }'
+}
+
+# accuracy_loop MEASURE-PROGRAM P|check NX NY NZ TABLEDIR: solves level
+# after level through the driver's own acc_solve "NX NY NZ" ETCHOPTS
+# (which leaves the developed surface in $acc_surface), measures each
+# with $margs into TABLEDIR/NXxNYxNZ.dat, and stops when measure's
+# estimate holds.  Sets acc_table (the last table) and acc_grid (its
+# counts); returns 0 when the estimate is within P (always for check), 3
+# when ACC_MAX_LEVEL is reached without it, 1 when a stage fails.
+accuracy_loop() {
+	acc_m=$1 acc_p=$2 acc_base="$3 $4 $5" acc_dir=$6
+	acc_k=-1 acc_prev="" acc_prevg=""
+	while :; do
+		# shellcheck disable=SC2086 # acc_base is three words on purpose
+		acc_grid=$(acc_grid $acc_base "$acc_k")
+		# shellcheck disable=SC2086 # the grid is three words on purpose
+		set -- $acc_grid
+		acc_table=$acc_dir/$1x$2x$3.dat
+		acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||
+			return 1
+		if [ -z "$acc_prev" ]; then
+			# shellcheck disable=SC2086 # margs is a list of words on purpose
+			"$acc_m" $margs -o "$acc_table" "$acc_surface" || return 1
+		else
+			acc_r=$(acc_ratio "$acc_prevg" "$acc_grid")
+			awk -v r="$acc_r" 'BEGIN { exit !(r >= 1.5) }' ||
+				{ echo "${prog}: -accuracy: the grid $acc_base is too coarse to coarsen" >&2; return 1; }
+			acc_st=0
+			# shellcheck disable=SC2086 # margs is a list of words on purpose
+			"$acc_m" $margs -accuracy "$acc_p" -coarse "$acc_prev" -ratio "$acc_r" \
+				-o "$acc_table" "$acc_surface" 2>"$acc_dir/measure.err" || acc_st=$?
+			case $acc_st in
+			0) cat "$acc_dir/measure.err" >&2; return 0 ;;
+			3) [ "$acc_k" -lt "$ACC_MAX_LEVEL" ] ||
+				{ cat "$acc_dir/measure.err" >&2; return 3; } ;;
+			*) cat "$acc_dir/measure.err" >&2; return 1 ;;
+			esac
+		fi
+		acc_prev=$acc_table acc_prevg=$acc_grid
+		acc_k=$((acc_k + 1))
+	done
 }

@@ -23,7 +23,7 @@ usage() {
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
            (or -points F:D,F:D,... instead of -dose and -focus)
-           [-target CD -tol PCT] [-seeds K] [-d DIR] [-j N] [-keep] [-n]
+           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-d DIR] [-j N] [-keep] [-n]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
   -if FILE      splat input file (the mask and the optics)
@@ -39,6 +39,13 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
   -seeds K      K stochastic runs a point (bleach -seed 1..K; the resist
                 needs a stochastic statement): fem.dat holds the mean cd,
                 stoch.dat the mean, its 3 sigma and the failures
+  -accuracy [P] choose the image grid, nz and etch's resolution at the
+                nominal point (the middle focus and dose) so that every
+                CD's estimated error is under P % (default 1), run every
+                point there and one level coarser, and give each table the
+                column err (um); a point over P fails
+  -accuracy check  every point at the inputs' grids and one level coarser:
+                the err column, no refinement
   -d DIR        the sweep's directory (default fem)
   -j N          points run at once (make -j N; default: the cores)
   -keep         keep every point's rate file and curves.plot
@@ -62,7 +69,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
 dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet=""
-etchopts="" points="" seeds=""
+etchopts="" points="" seeds="" accuracy=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help|-h) usage; exit 0 ;;
@@ -85,6 +92,7 @@ while [ $# -gt 0 ]; do
 	-sbatch) need_val "$@"; sbopts=$2; shift 2 ;;
 	-collect) collect=yes; shift ;;
 	-q) quiet=-q; shift ;;
+	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -113,7 +121,7 @@ DRAWPLOT=$(findprog drawplot)
 
 # -collect: everything else is in DIR/Makefile
 if [ -n "$collect" ]; then
-	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds" ] ||
+	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds$accuracy" ] ||
 		bad "-collect takes only -d, -target, -tol and -q: the sweep is in DIR/Makefile"
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
@@ -133,6 +141,7 @@ case $chunk in ''|*[!0-9]*|0*) badv "-chunk $chunk: expected a whole number >= 1
 if [ -n "$seeds" ]; then
 	case $seeds in ''|*[!0-9]*|0*) badv "-seeds $seeds: expected a whole number from 1 to 1000" ;; esac
 	[ "$seeds" -le 1000 ] || badv "-seeds $seeds: expected a whole number from 1 to 1000"
+	[ -z "$accuracy" ] || badv "-seeds with -accuracy: the error estimate of a stochastic run is not a discretisation error; choose the grid with -accuracy first, then run -seeds at it"
 fi
 if [ -n "$jobs" ]; then
 	case $jobs in ''|*[!0-9]*|0*) badv "-j $jobs: expected a whole number >= 1" ;; esac
@@ -233,6 +242,78 @@ done
 "$MEASURE" $pargs -o "$chk/measure.dat" "$chk/probe.plot" >/dev/null 2>"$chk/err" ||
 	die "measure refuses -measure \"$margs\": $(sed -n '1{s/^measure: //;p;}' "$chk/err")"
 
+# the engine measure reads (etchopts.sh): fast marching unless an etch
+# option chooses the engine
+etch_engine_default
+
+# -accuracy: the grids of the inputs (the library's readers, through
+# femwin); P is chosen below at the nominal point, check keeps them
+grid="" cgrid="" ratio="" rgrid=""
+if [ -n "$accuracy" ]; then
+	[ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
+		bad "-accuracy $accuracy runs the nominal point to choose the grid: not with -n or -slurm (give -accuracy check)"
+	grid=$("$FEMWIN" -resolution "$mask" "$resist" 2>"$chk/err") ||
+		die "$(sed -n '1{s/^femwin: //;p;}' "$chk/err")"
+	rgrid=$grid
+fi
+
+# fem_accuracy_choose: sets grid (the points' counts "nx ny nz"), cgrid
+# (the coarse solve's) and ratio (their spacing ratio).  -accuracy P:
+# etchopts.sh's accuracy_loop at the nominal point, the middle focus and
+# dose, in DIR/accuracy (its tables kept there); check: the inputs' grid
+# and level -1
+acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
+	# shellcheck disable=SC2086 # the grid is three words on purpose
+	set -- $1 "$2"
+	say "accuracy: focus $nomf dose $nomd: splat -grid $1 $2, bleach -nz $3"
+	"$SPLAT" -q -defocus "$nomf" -grid "$1" "$2" -o "$dir/accuracy/image.cont" \
+		"$dir/mask.in" || return 1
+	"$BLEACH" -q -dose "$nomd" -nz "$3" -o "$dir/accuracy/rate" "$dir/accuracy/image.cont" \
+		"$dir/resist.in" || return 1
+	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
+	"$ETCH" -q -et "$etchtime" $4 -no2d -o "$dir/accuracy/curves.plot" "$dir/accuracy/rate" ||
+		return 1
+	acc_surface=$dir/accuracy/curves.plot
+}
+fem_accuracy_choose() {
+	[ -n "$accuracy" ] || return 0
+	# shellcheck disable=SC2086 # the grid is three words on purpose
+	if [ "$accuracy" = check ]; then
+		cgrid=$(acc_grid $grid -1)
+	else
+		nomf=$(printf '%s\n' "$fvals" | sed -n "$(( (nf + 1) / 2 ))p")
+		nomd=$(printf '%s\n' "$dvals" | sed -n "$(( (nd + 1) / 2 ))p")
+		mkdir -p "$dir/accuracy" || die "$dir/accuracy: cannot make the directory"
+		st=0
+		accuracy_loop "$MEASURE" "$accuracy" $grid "$dir/accuracy" || st=$?
+		case $st in
+		0) ;;
+		3) die "-accuracy $accuracy: not reached at the nominal point (focus $nomf dose $nomd) at grid $acc_grid: see $acc_table" ;;
+		*) die "-accuracy: the nominal point failed (focus $nomf dose $nomd)" ;;
+		esac
+		grid=$acc_grid cgrid=$acc_prevg
+		rm -f "$dir/accuracy/rate" "$dir/accuracy/curves.plot" "$dir/accuracy/image.cont"
+		say "accuracy: grid $grid (nx ny nz) at the nominal point, within $accuracy %"
+	fi
+	ratio=$(acc_ratio "$cgrid" "$grid")
+	# etch's options at the two grids (-seg and -dt scaled with them)
+	etchopts=$(acc_etchopts "$(acc_ratio "$grid" "$rgrid")")
+	cetchopts=$(acc_etchopts "$(acc_ratio "$cgrid" "$rgrid")")
+}
+# fem_accuracy_rules F P: the rules of point P (focus directory F) for the
+# coarse solve, whose table measure compares the point's with
+fem_accuracy_rules() {
+	[ -n "$accuracy" ] || return 0
+	echo "$2/rate-coarse: $1/image-coarse.cont resist.in accuracy.opts"
+	printf '\t@mkdir -p %s\n' "$2"
+	printf '\t@$(RUN) %s/bleach-coarse.log "focus %s dose %s: bleach (coarse)" $@ $(BLEACH) -q $(CBLEACHNZ) -dose %s -o $@ %s/image-coarse.cont resist.in\n' "$2" "$f" "$d" "$d" "$1"
+	echo "$2/coarse.plot: $2/rate-coarse etch.opts"
+	printf '\t@$(RUN) %s/etch-coarse.log "focus %s dose %s: etch (coarse)" $@ $(ETCH) -q $(CETCHOPTS) -no2d -o $@ %s/rate-coarse\n' "$2" "$f" "$d" "$2"
+	echo "$2/coarse.dat: $2/coarse.plot measure.opts"
+	printf '\t@$(RUN) %s/measure-coarse.log "focus %s dose %s: measure (coarse)" $@ $(MEASURE) $(MEASUREARGS) -o $@ %s/coarse.plot\n' "$2" "$f" "$d" "$2"
+	printf '\t@$(CLEAN) %s/rate-coarse %s/coarse.plot\n' "$2" "$2"
+}
+
 # DIR: the inputs (copied, so that the sweep does not change under a later
 # edit), the options each stage depends on, and the Makefile; a file is
 # replaced only when its content changes, so make redoes exactly the work
@@ -245,8 +326,10 @@ put() { # put FILE: stdin becomes FILE if different
 }
 put mask.in <"$mask"
 put resist.in <"$resist"
-echo "-et $etchtime$etchopts" | put etch.opts
 echo "$margs" | put measure.opts
+fem_accuracy_choose
+echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio}" | put accuracy.opts
+echo "-et $etchtime$etchopts${accuracy:+ / $cetchopts}" | put etch.opts
 
 fname() { echo "f$1"; }
 dname() { echo "d$1"; }
@@ -290,6 +373,17 @@ S
 	echo "DRAWPLOT = $DRAWPLOT"
 	echo "ETCHOPTS = -et $etchtime$etchopts"
 	echo "MEASUREARGS = $margs"
+	# -accuracy: the grids of the points and of their coarse solves
+	if [ -n "$accuracy" ]; then
+		# shellcheck disable=SC2086 # two grids of three words on purpose
+		set -- $grid $cgrid
+		echo "SPLATGRID = -grid $1 $2"
+		echo "BLEACHNZ = -nz $3"
+		echo "CSPLATGRID = -grid $4 $5"
+		echo "CBLEACHNZ = -nz $6"
+		echo "CETCHOPTS = -et $etchtime$cetchopts"
+		echo "ACCURACY = -accuracy $accuracy -ratio $ratio"
+	fi
 	echo "TARGET = $target"
 	echo "TOL = $tol"
 	echo "RUN = sh stage.sh"
@@ -304,30 +398,45 @@ S
 	echo
 	printf 'images:'
 	for f in $fvals; do printf ' %s/image.cont' "$(fname "$f")"; done
+	# -accuracy: the coarse images too, made once per focus before the points
+	[ -z "$accuracy" ] || for f in $fvals; do printf ' %s/image-coarse.cont' "$(fname "$f")"; done
 	echo
 	# intermediates: not rebuilt when a point's measure.dat is up to date
 	printf '.SECONDARY:'
 	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
 		for R in $(runs "$(fname "$f")/$(dname "$d")"); do printf ' %s/rate %s/curves.plot' "$R" "$R"; done
+		[ -z "$accuracy" ] ||
+			printf ' %s/%s/rate-coarse %s/%s/coarse.plot' "$(fname "$f")" "$(dname "$d")" "$(fname "$f")" "$(dname "$d")"
 	done; done
 	echo
 	for f in $fvals; do
 		F=$(fname "$f")
 		echo
-		echo "$F/image.cont: mask.in resist.in"
+		echo "$F/image.cont: mask.in resist.in accuracy.opts"
 		printf '\t@mkdir -p %s\n' "$F"
-		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
+		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q $(SPLATGRID) -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
+		if [ -n "$accuracy" ]; then
+			echo "$F/image-coarse.cont: mask.in resist.in accuracy.opts"
+			printf '\t@mkdir -p %s\n' "$F"
+			printf '\t@$(RUN) %s/splat-coarse.log "focus %s: splat (coarse)" $@ $(SPLAT) -q $(CSPLATGRID) -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
+		fi
 		for d in $dvals; do inpts "$f" "$d" || continue; for P in $(runs "$F/$(dname "$d")"); do
 			seed="" what="focus $f dose $d"
 			[ -z "$seeds" ] || { seed=" -seed ${P##*/s}" what="$what seed ${P##*/s}"; }
-			echo "$P/rate: $F/image.cont resist.in"
+			echo "$P/rate: $F/image.cont resist.in accuracy.opts"
 			printf '\t@mkdir -p %s\n' "$P"
-			printf '\t@$(RUN) %s/bleach.log "%s: bleach" $@ $(BLEACH) -q -dose %s%s -o $@ %s/image.cont resist.in\n' "$P" "$what" "$d" "$seed" "$F"
+			printf '\t@$(RUN) %s/bleach.log "%s: bleach" $@ $(BLEACH) -q $(BLEACHNZ) -dose %s%s -o $@ %s/image.cont resist.in\n' "$P" "$what" "$d" "$seed" "$F"
 			echo "$P/curves.plot: $P/rate etch.opts"
 			printf '\t@$(RUN) %s/etch.log "%s: etch" $@ $(ETCH) -q $(ETCHOPTS) -o $@ %s/rate\n' "$P" "$what" "$P"
-			echo "$P/measure.dat: $P/curves.plot measure.opts"
-			printf '\t@$(RUN) %s/measure.log "%s: measure" $@ $(MEASURE) $(MEASUREARGS) -o $@ %s/curves.plot\n' "$P" "$what" "$P"
+			if [ -n "$accuracy" ]; then
+				echo "$P/measure.dat: $P/curves.plot $P/coarse.dat measure.opts accuracy.opts"
+				printf '\t@$(RUN) %s/measure.log "%s: measure" $@ $(MEASURE) $(MEASUREARGS) $(ACCURACY) -coarse %s/coarse.dat -o $@ %s/curves.plot\n' "$P" "$what" "$P" "$P"
+			else
+				echo "$P/measure.dat: $P/curves.plot measure.opts"
+				printf '\t@$(RUN) %s/measure.log "%s: measure" $@ $(MEASURE) $(MEASUREARGS) -o $@ %s/curves.plot\n' "$P" "$what" "$P"
+			fi
 			printf '\t@$(CLEAN) %s/rate %s/curves.plot %s/curves.plot.2D\n' "$P" "$P" "$P"
+			fem_accuracy_rules "$F" "$P"
 		done; done
 	done
 	echo
@@ -397,7 +506,10 @@ if [ -n "$slurm" ]; then
 		echo "cd $dir"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		t=0
-		for f in $fvals; do echo "$t) set -- $(fname "$f")/image.cont ;;"; t=$((t + 1)); done
+		for f in $fvals; do
+			echo "$t) set -- $(fname "$f")/image.cont${accuracy:+ $(fname "$f")/image-coarse.cont} ;;"
+			t=$((t + 1))
+		done
 		echo '*) echo "images.sbatch: no task $SLURM_ARRAY_TASK_ID" >&2; exit 1 ;;'
 		echo "esac"
 		echo 'exec make -s --no-print-directory "$@"'

@@ -28,7 +28,8 @@ usage() {
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
-                [-cut x|y VALUE|mid] [-last] [etch options] [-q]
+                [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check]]]
+                [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
   -bf FILE    run bleach with FILE (needs -if or -cf)
@@ -47,7 +48,13 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -last       etch writes only the final set, and the pictures show it
   -q          quiet: no progress lines
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
-              and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0"
+              and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0";
+              etch is fast marching (-method fmm) unless an etch option
+              chooses the engine
+  -accuracy [P]  with -measure, -if and -bf: refine the image grid, nz
+              and etch's resolution until every CD's estimated error is
+              under P % (default 1); the table gains the column err (um)
+  -accuracy check  the estimate at the inputs' own grids, no refinement
   -h, --help  this text
 U
 	etchopts_usage
@@ -59,7 +66,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
 printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
-cutaxis="" cutval="" measureopts="" last=""
+cutaxis="" cutval="" measureopts="" last="" accuracy=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	-h|--help) usage; exit 0 ;;
@@ -80,6 +87,7 @@ while [ $# -gt 0 ]; do
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		cutaxis=$2 cutval=$3; shift 3 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
+	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -93,6 +101,13 @@ etchopts="$etchopts -cut $cutaxis $cutval"
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
 [ -z "$measureopts" ] || [ -n "$etchtime" ] || bad "-measure needs -et (it measures etch's result)"
+if [ -n "$accuracy" ]; then
+	[ -n "$measureopts" ] || bad "-accuracy needs -measure (it bounds the error of the CDs)"
+	[ -n "$splat_in" ] && [ -n "$bleach_in" ] ||
+		bad "-accuracy refines splat's and bleach's grids: give -if and -bf"
+fi
+# the engine measure reads: fast marching unless an etch option says
+[ -z "$measureopts" ] || etch_engine_default
 if [ -n "$measureopts" ]; then
 	# measure's options are checked before any stage runs: on an empty
 	# input it stops with 1 if they are good, 2 (and its usage) if not
@@ -119,9 +134,40 @@ if [ -n "$etchtime" ]; then
 	fi
 fi
 
+# -accuracy: splat, bleach, etch and measure level after level (etchopts.sh
+# accuracy_loop), in this directory, so that the files left are those of
+# the table printed; each level's table is kept in accuracy/
+acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS
+	# shellcheck disable=SC2086 # the grid is three words on purpose
+	set -- $1 "$2"
+	say "accuracy: splat -grid $1 $2, bleach -nz $3, etch$4"
+	splat $quiet -grid "$1" "$2" "$splat_in" || die "splat failed; stopping"
+	bleach $quiet $ascii $solid -nz "$3" -o "$rate" "$contour" "$bleach_in" ||
+		die "bleach failed; stopping"
+	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
+	etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $4 "$rate" ||
+		die "etch failed; stopping"
+	acc_surface=curves.plot
+}
+if [ -n "$accuracy" ]; then
+	grid=$(femwin -resolution "$splat_in" "$bleach_in") || exit 1
+	contour=$(splat -name "$splat_in") || exit 1
+	if [ -n "$ascii" ]; then rate=rval.3D; else rate=rval.3D.binary; fi
+	mkdir -p accuracy || die "cannot make the directory accuracy"
+	margs=$measureopts st=0
+	# shellcheck disable=SC2086 # the grid is three words on purpose
+	accuracy_loop measure "$accuracy" $grid accuracy || st=$?
+	[ $st -ne 1 ] || die "-accuracy: a stage failed; stopping"
+	cat "$acc_table"
+	if [ $st -eq 3 ]; then
+		die "-accuracy $accuracy: not reached at grid $acc_grid (the err column above); stopping"
+	fi
+	say "accuracy: grid $acc_grid (nx ny nz), the tables of every level in accuracy/"
+fi
+
 # splat: the contour-file is the one the input names (its "contour" line),
 # else splat's default splat.cont
-if [ -n "$splat_in" ]; then
+if [ -n "$splat_in" ] && [ -z "$accuracy" ]; then
 	[ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
 	contour=$(splat -name "$splat_in") || exit 1
 	say "splat $splat_in -> $contour"
@@ -129,7 +175,9 @@ if [ -n "$splat_in" ]; then
 	splat $quiet ${bleach_in:+-bf "$bleach_in"} "$splat_in" || die "splat failed; stopping"
 fi
 
-if [ -n "$bleach_in" ]; then
+if [ -n "$accuracy" ]; then
+	:       # bleach, etch and measure ran above
+elif [ -n "$bleach_in" ]; then
 	[ -n "$contour" ] || bad "-bf needs the aerial image: give -if or -cf"
 	if [ -n "$ascii" ]; then rate=rval.3D; else rate=rval.3D.binary; fi
 	say "bleach $contour $bleach_in -> $rate${solid:+ and mxyz.solid.3D}"
@@ -143,12 +191,14 @@ if [ -z "$etchtime" ]; then
 	exit 0
 fi
 [ -n "$rate" ] || bad "-et needs an etch-rate file: give -rb, -ra, or -bf"
-say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> curves.plot"
-# shellcheck disable=SC2086 # etchopts is a list of words on purpose
-etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts "$rate" ||
-	die "etch failed; stopping"
+if [ -z "$accuracy" ]; then
+	say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> curves.plot"
+	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
+	etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts "$rate" ||
+		die "etch failed; stopping"
+fi
 
-if [ -n "$measureopts" ]; then
+if [ -n "$measureopts" ] && [ -z "$accuracy" ]; then
 	say "measure $measureopts curves.plot (the last set)"
 	# shellcheck disable=SC2086 # measureopts is a list of words on purpose
 	measure $measureopts curves.plot || die "measure failed; stopping"

@@ -28,6 +28,8 @@ struct bleach_opts {
 	int have_dose;          /* -dose given: dose replaces the input's */
 	double dose;            /* mJ/cm2 */
 	long seed;              /* -seed: replaces the stochastic statement's; -1 if not given */
+	int nz;                 /* -nz: points through the resist, replacing the
+				   input's grid nz (0: the input's) */
 };
 
 /* Reads, exposes, bakes and writes the rate array (and mxyz.solid.3D);

@@ -21,7 +21,7 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-seed S]\n"
+	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-seed S] [-nz N]\n"
 	"              [-big] [-threads n] contour-file bleach-inputfile\n"
 	"       bleach -cutline [-ascii] [-o rate-file] [-q] cutline-plot bleach-inputfile\n"
 	"  -cutline       the first file is a cutline of splat (a 2D plot file): write the\n"
@@ -33,6 +33,7 @@ static const char usage[] =
 	"  -q             no progress lines on stderr\n"
 	"  -dose D        exposure dose in mJ/cm2, replacing the input's dose statement\n"
 	"  -seed S        the shot noise's seed, replacing the stochastic statement's\n"
+	"  -nz N          points through the resist, replacing the input's grid nz\n"
 	"  -big           run work estimated beyond the limits (an hour, the\n"
 	"                 machine's memory; also SAMPLE3D_BIG=1)\n"
 	"  -threads n     threads to use (default $SAMPLE3D_THREADS, else every core)\n";
@@ -43,6 +44,7 @@ static const double DOSE_MAX = 1e6;
 struct options {
 	int ascii, solid, quiet, cutline;
 	long threads;
+	long nz;                /* -nz, 0 when not given */
 	double level;
 	const char *output;
 	const char *dose;       /* -dose value, checked after parsing */
@@ -73,6 +75,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			budget_allow_big();
 		else if (args_int(&a, "-threads", 1, PAR_MAX_THREADS, &o->threads))
 			;
+		else if (args_int(&a, "-nz", 2, BLEACH_MAX_NZ, &o->nz))
+			;
 		else if (args_num(&a, "-m", 0, 1, &o->level))
 			;
 		else if (args_str(&a, "-o", &o->output))
@@ -86,6 +90,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (o->cutline && o->solid)
 		args_error(&a, "-solid draws a 3D array: not with -cutline");
+	if (o->cutline && o->nz)
+		args_error(&a, "-nz sets the 3D array's grid: not with -cutline");
 	if (!o->contour)
 		args_error(&a, "no contour-file");
 	else if (!o->input)
@@ -108,7 +114,7 @@ int main(int argc, char **argv)
 	/* -dose D: the range of bleach(5)'s dose statement; a bad value is a
 	 * one-line usage error (sweep scripts read it in a log) */
 	struct bleach_opts b = {o.contour, o.input, o.output, o.ascii, o.solid, o.quiet,
-				o.level, o.dose != NULL, 0, o.seed};
+				o.level, o.dose != NULL, 0, o.seed, (int)o.nz};
 	if (o.dose && (!num_parse(o.dose, &b.dose) || !(b.dose >= 0 && b.dose <= DOSE_MAX)))
 		die_status(EXIT_USAGE, "option -dose: expected a number from 0 to %g, found \"%.40s\"",
 			   DOSE_MAX, o.dose);

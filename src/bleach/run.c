@@ -248,6 +248,16 @@ static void read_inputs(struct run *u)
 		die("-seed %ld: %s has no stochastic statement (bleach(5))", o->seed, o->input);
 	if (o->seed >= 0)
 		in->seed = o->seed;
+	if (o->nz) {
+		/* -nz: the grid statement's nz, with the file's check that the
+		 * standing waves are sampled (two points a period) */
+		in->nz = o->nz;
+		double period = in->wavelength / (2 * in->index);
+		if (in->standing && in->thick / (in->nz - 1) > period / 2)
+			die_status(EXIT_USAGE, "option -nz %d: %g um a point through %g um of "
+				   "resist, more than half the standing-wave period %g um",
+				   in->nz, in->thick / (in->nz - 1), in->thick, period);
+	}
 	if (st->is_stack)
 		stack_check(st, in, o->contour, o->input);
 	if (st->film)

@@ -41,5 +41,11 @@ void femwin_window(const struct fem_table *t, const struct femwin_spec *s,
  * resist from -thickness to 0) as etch would, for checking measure's
  * arguments before a sweep. */
 void femwin_probe(const char *splat_in, const char *bleach_in, const char *out);
+/* Prints "nx ny nz" on stdout: the image grid of splat_in and the points
+ * through the resist of bleach_in (its grid nz, or the default), the
+ * resolution the drivers' -accuracy refines (splat -grid, bleach -nz);
+ * dies when bleach_in resamples the image on its own grid nx ny, which
+ * -accuracy could not refine. */
+void femwin_resolution(const char *splat_in, const char *bleach_in);
 
 #endif

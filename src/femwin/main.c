@@ -2,7 +2,8 @@
  * femwin - the tables of a focus-exposure matrix, for fem(1) and by hand:
  * collects the points' measure tables into fem.dat with the Bossung plot
  * (-collect), computes the process window of a fem.dat (-target, -tol),
- * or writes the probe surface fem checks measure's arguments on (-probe).
+ * writes the probe surface fem checks measure's arguments on (-probe),
+ * or prints the grids the drivers' -accuracy refines (-resolution).
  */
 #include "args.h"
 #include "femwin.h"
@@ -20,6 +21,7 @@ static const char usage[] =
 	"       femwin -collect [-o fem.dat] [-bossung bossung.2D] [-template file]\n"
 	"              [-stochastic stoch.dat] -p focus dose measure-table ...\n"
 	"       femwin -probe mask.in resist.in [-o probe.plot]\n"
+	"       femwin -resolution mask.in resist.in\n"
 	"  -target CD       the CD in spec (um)\n"
 	"  -tol PCT         in spec when |cd - CD| <= PCT % of CD (and cleared)\n"
 	"  -o file          output: window.dat, fem.dat or the probe surface\n"
@@ -35,9 +37,11 @@ static const char usage[] =
 	"  -stochastic file a point given more than once holds seeds: fem.dat gets\n"
 	"                   their mean cd, file the mean, 3 sigma and failures\n"
 	"  -probe m r       the undeveloped resist of splat input m and bleach\n"
-	"                   input r as a surface, to try measure's arguments on\n";
+	"                   input r as a surface, to try measure's arguments on\n"
+	"  -resolution m r  print the image grid of m and the points through the\n"
+	"                   resist of r: nx ny nz (what the drivers' -accuracy refines)\n";
 
-enum mode { M_NONE, M_WINDOW, M_COLLECT, M_PROBE };
+enum mode { M_NONE, M_WINDOW, M_COLLECT, M_PROBE, M_RESOLUTION };
 
 struct options {
 	enum mode mode;
@@ -52,7 +56,8 @@ struct options {
 static void set_mode(struct args *a, struct options *o, enum mode m, const char *opt)
 {
 	if (o->mode != M_NONE && o->mode != m)
-		args_error(a, "%s: -collect, -probe and -target/-tol are different jobs", opt);
+		args_error(a, "%s: -collect, -probe, -resolution and -target/-tol are different "
+			   "jobs", opt);
 	o->mode = m;
 }
 
@@ -82,10 +87,10 @@ static void parse_options(int argc, char **argv, struct options *o)
 			xgrow(&o->pts, &cap, (size_t)o->npts + 1, sizeof *o->pts);
 			o->pts[o->npts++] = in;
 			a.i += 4;
-		} else if (strcmp(w, "-probe") == 0) {
-			set_mode(&a, o, M_PROBE, w);
+		} else if (strcmp(w, "-probe") == 0 || strcmp(w, "-resolution") == 0) {
+			set_mode(&a, o, w[1] == 'p' ? M_PROBE : M_RESOLUTION, w);
 			if (a.i + 2 >= argc) {
-				args_error(&a, "-probe needs a splat and a bleach input file");
+				args_error(&a, "%s needs a splat and a bleach input file", w);
 				a.i = argc;
 				break;
 			}
@@ -113,7 +118,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	switch (o->mode) {
 	case M_NONE:
-		args_error(&a, "nothing to do: give -target and -tol, -collect, or -probe");
+		args_error(&a, "nothing to do: give -target and -tol, -collect, -probe or "
+			   "-resolution");
 		break;
 	case M_WINDOW:
 		if (!o->have_target || !o->have_tol)
@@ -140,6 +146,11 @@ static void parse_options(int argc, char **argv, struct options *o)
 		    o->stoch)
 			args_error(&a, "-probe takes only -o");
 		break;
+	case M_RESOLUTION:
+		if (o->fem || o->out || o->plot || o->bossung || o->template || o->region ||
+		    o->region_tpl)
+			args_error(&a, "-resolution takes no other option");
+		break;
 	}
 	args_done(&a, NULL);
 }
@@ -165,6 +176,9 @@ int main(int argc, char **argv)
 		break;
 	case M_PROBE:
 		femwin_probe(o.probe_mask, o.probe_resist, o.out ? o.out : "probe.plot");
+		break;
+	case M_RESOLUTION:
+		femwin_resolution(o.probe_mask, o.probe_resist);
 		break;
 	case M_NONE:
 		break;

@@ -6,11 +6,17 @@
  * developed surface: one set whose box is the mask window (splat(5)) times
  * the resist thickness (bleach(5)), the flat top z = 0 as two triangles
  * whose normal points up, out of the resist (plot3d(5)).
+ *
+ * The grids the drivers' -accuracy refines are read off the same two
+ * inputs here (femwin -resolution), by the library's readers.
  */
 #include "femwin.h"
 #include "fmt_bleach.h"
 #include "fmt_plot.h"
 #include "fmt_splat.h"
+#include "util.h"
+
+#include <stdio.h>
 
 void femwin_probe(const char *splat_in, const char *bleach_in, const char *out)
 {
@@ -29,4 +35,18 @@ void femwin_probe(const char *splat_in, const char *bleach_in, const char *out)
 	fmt_plot_add_curve(pf, s, 4, t2);
 	fmt_plot_write(out, pf);
 	fmt_plot_free(pf);
+}
+
+void femwin_resolution(const char *splat_in, const char *bleach_in)
+{
+	struct splat_input *si = fmt_splat_read(splat_in);
+	int nx = si->nx, ny = si->ny;
+	fmt_splat_free(si);
+	struct bleach_input bi;
+	fmt_bleach_read(bleach_in, &bi);
+	if (bi.nx)
+		die("%s:%ld: grid nx %d ny %d resamples the image on a grid of its own, which "
+		    "-accuracy cannot refine: leave nx and ny out (the image's grid is used)",
+		    bleach_in, bi.line_nz, bi.nx, bi.ny);
+	printf("%d %d %d\n", nx, ny, bi.nz);
 }

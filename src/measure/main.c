@@ -20,7 +20,7 @@ static const char usage[] =
 	"usage: measure [-s set] (-at z1,z2,... | -rel p1,p2,...)\n"
 	"               (-hole X Y | -space X Y x|y | -line X Y x|y | -holes)\n"
 	"               [-ler [-psd file]] [-lcdu] [-o file] [-plot file] [-force]\n"
-	"               surface.plot\n"
+	"               [-accuracy P|check -coarse table [-ratio r]] surface.plot\n"
 	"  -s set          the set (print time) to measure, from 1 in file order\n"
 	"                  (default: the last)\n"
 	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
@@ -44,6 +44,12 @@ static const char usage[] =
 	"  -force          measure a surface that crosses itself (loops left by\n"
 	"                  etch without -deloop), or a section through a gap of\n"
 	"                  the surface (open border that -deloop left)\n"
+	"  -accuracy P|check  add the column err, the discretisation error of cd\n"
+	"                  estimated from the table of the same measurement on a\n"
+	"                  coarser solve (Richardson, order 1 assumed); with P\n"
+	"                  (percent), exit 3 when an err is over P %% of its cd\n"
+	"  -coarse table   that table (measure's output on the coarser solve)\n"
+	"  -ratio r        its grid spacing over this one's (default 2)\n"
 	"  -h, --help      this text\n";
 
 /* A comma-separated list of finite numbers. */
@@ -140,6 +146,28 @@ static void check_whole(struct args *a, const struct options *o)
 			   o->ler ? "-ler" : "-lcdu");
 }
 
+/* -ratio's range: a coarse grid must be coarser; a hundred times is
+ * beyond any use of the estimate (which assumes both solves are close to
+ * converged). */
+static const double RATIO_MIN = 1.01, RATIO_MAX = 100;
+
+/* -accuracy P|check and -coarse go together; P is a percentage. */
+static void parse_accuracy(struct args *a, struct options *o, const char *acc)
+{
+	if (!acc) {
+		if (o->coarse)
+			args_error(a, "-coarse goes with -accuracy");
+		return;
+	}
+	o->have_accuracy = 1;
+	if (strcmp(acc, "check") != 0 &&
+	    (!num_parse(acc, &o->accuracy) || !(o->accuracy > 0 && o->accuracy < 100)))
+		args_error(a, "option -accuracy: expected a percentage between 0 and 100, or "
+			   "check, found \"%.40s\"", acc);
+	if (!o->coarse)
+		args_error(a, "-accuracy needs -coarse (the table of the coarser solve)");
+}
+
 static void parse_options(int argc, char **argv, struct options *o)
 {
 	struct args a;
@@ -147,8 +175,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 	args_usage(&a, usage, NULL, NULL);
 	memset(o, 0, sizeof *o);
 	o->out = "-";
-	const char *at = NULL, *rel = NULL;
+	const char *at = NULL, *rel = NULL, *acc = NULL;
 	const char **slots[] = {&o->input};
+	o->ratio = 2;
 	while (a.i < argc) {
 		args_help_exit(&a, 1);
 		if (a.i >= argc)
@@ -156,6 +185,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		if (args_int(&a, "-s", 1, PLOT_MAX_COUNT, &o->set) ||
 		    args_str(&a, "-at", &at) || args_str(&a, "-rel", &rel) ||
 		    args_str(&a, "-o", &o->out) || args_str(&a, "-plot", &o->plot) ||
+		    args_str(&a, "-accuracy", &acc) || args_str(&a, "-coarse", &o->coarse) ||
+		    args_num(&a, "-ratio", RATIO_MIN, RATIO_MAX, &o->ratio) ||
 		    parse_feature(&a, o))
 			continue;
 		if (args_flag(&a, "-force")) {
@@ -181,6 +212,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 					   o->h[i]);
 				break;
 			}
+	parse_accuracy(&a, o, acc);
 	if (o->holes && o->have_kind)
 		args_error(&a, "give -holes or one of -hole, -space and -line, not both");
 	else if (!o->have_kind && !o->holes)
@@ -190,6 +222,10 @@ static void parse_options(int argc, char **argv, struct options *o)
 		args_error(&a, "give the surface file (curves.plot of etch)");
 	args_done(&a, NULL);
 }
+
+/* measure -accuracy P: a table whose estimate is over P % (the drivers
+ * refine on it); 1 is an error, 2 a usage error. */
+enum { EXIT_INACCURATE = 3 };
 
 /* Too many crossings to be worth counting further. */
 enum { CROSS_REPORT_MAX = 1000 };
@@ -336,7 +372,7 @@ int main(int argc, char **argv)
 	if (o.holes)
 		return holes_main(&o, s, z);
 
-	struct result r;
+	struct result r = {0};
 	measure_feature(s, &o, z, &r);
 	if (gaps(&o, s, setno, &r, err, sizeof err)) {
 		free(r.rows);
@@ -364,6 +400,7 @@ int main(int argc, char **argv)
 			     o.kind == HOLE ? "hole" : o.kind == SPACE ? "space" : "line");
 			break;
 		}
+	int over = o.have_accuracy ? accuracy_estimate(&o, &r) : 0;
 	if (o.psd || o.plot)
 		aout_defer();
 	report_table(&o, &r);
@@ -375,9 +412,12 @@ int main(int argc, char **argv)
 		aout_finish();
 	if (o.ler)
 		roughness_free(&rough);
+	if (over)
+		fprintf(stderr, "measure: %s: the estimated error of %d cd%s is over %g %%\n",
+			o.input, over, over == 1 ? "" : "s", o.accuracy);
 	free(r.rows);
 	free(z);
 	free(o.h);
 	surf_free(s);
-	return 0;
+	return over ? EXIT_INACCURATE : 0;
 }

@@ -28,6 +28,11 @@ struct options {
 	const char *psd;        /* -psd file or NULL */
 	int holes;              /* -holes: every hole of the section */
 	int lcdu;               /* -lcdu */
+	/* -accuracy P|check with -coarse TABLE [-ratio R]: the err column */
+	const char *coarse;     /* the table measured on the coarser solve */
+	double accuracy;        /* percent; 0 for check (estimate only) */
+	int have_accuracy;
+	double ratio;           /* coarse / fine grid spacing (default 2) */
 	const char *input;
 };
 
@@ -44,6 +49,7 @@ struct row {
 	 * ymax): a hole's region, the stretch of a space or line, the point
 	 * alone where the feature is absent */
 	double rect[4];
+	double err;             /* um, the estimated discretisation error */
 };
 
 struct roughness;
@@ -57,6 +63,7 @@ struct result {
 	double resist_loss;     /* um */
 	int cleared;
 	const struct roughness *rough;  /* -ler: its lines follow the table */
+	int have_err;           /* err estimated (-accuracy) */
 };
 
 /* Measures the feature of o on surface s at every height (heights in um,
@@ -66,6 +73,10 @@ void measure_feature(const struct surf *s, const struct options *o,
 
 /* z raised off the substrate as the table's sections are (feature.c). */
 double feature_height(const struct surf *s, double z);
+/* accuracy.c: the Richardson estimate of each row's discretisation
+ * error from the coarse table; returns the number of rows whose estimate
+ * is over o->accuracy percent of their cd (0 for check). */
+int accuracy_estimate(const struct options *o, struct result *r);
 
 /* The table on o->out, and the plot file if o->plot. */
 void report_table(const struct options *o, const struct result *r);

@@ -18,11 +18,11 @@ void report_table(const struct options *o, const struct result *r)
 		.hole = o->kind == HOLE, .nrows = r->nrows,
 		.rows = xreallocarray(NULL, (size_t)(r->nrows > 0 ? r->nrows : 1), sizeof *t.rows),
 		.have_swa = r->have_swa, .swa = r->swa_known ? r->swa : NAN,
-		.resist_loss = r->resist_loss, .cleared = r->cleared,
+		.resist_loss = r->resist_loss, .cleared = r->cleared, .have_err = r->have_err,
 	};
 	for (int i = 0; i < r->nrows; i++) {
 		const struct row *w = &r->rows[i];
-		t.rows[i] = (struct measure_row){w->z, w->cd, {w->a, w->b, w->c}};
+		t.rows[i] = (struct measure_row){w->z, w->cd, {w->a, w->b, w->c}, w->err};
 	}
 	if (r->rough) {
 		const struct roughness *g = r->rough;

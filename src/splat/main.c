@@ -23,7 +23,7 @@
 #include <string.h>
 
 static const char usage[] =
-	"usage: splat [-o contour-file] [-q] [-big] [-name] [-defocus d]\n"
+	"usage: splat [-o contour-file] [-q] [-big] [-name] [-defocus d] [-grid nx ny]\n"
 	"             [-method hopkins|abbe|auto] [-bf resist-file] [-threads n] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
@@ -31,6 +31,8 @@ static const char usage[] =
 	"  -big             run work estimated beyond the limits (an hour, the\n"
 	"                   machine's memory; also SAMPLE3D_BIG=1)\n"
 	"  -defocus d       defocus in micrometres, replacing the input's defocus\n"
+	"  -grid nx ny      the image grid (points, ends included), replacing the\n"
+	"                   input's grid statement\n"
 	"  -method m        hopkins (pairs of orders, exact source integral), abbe\n"
 	"                   (source points and FFTs, for large windows) or auto\n"
 	"                   (default: the one estimated cheaper)\n"
@@ -46,6 +48,7 @@ struct options {
 	int quiet;
 	int name_only;
 	const char *defocus;    /* -defocus value, checked after parsing */
+	const char *grid[2];    /* -grid values, checked after parsing */
 	const char *method;     /* -method value */
 	const char *bf;         /* -bf resist file */
 	long threads;
@@ -79,7 +82,16 @@ static void parse_options(int argc, char **argv, struct options *o)
 			;
 		else if (args_str(&a, "-defocus", &o->defocus))
 			;
-		else if (args_str(&a, "-method", &o->method))
+		else if (args_flag(&a, "-grid")) {
+			/* two words: nx ny */
+			if (a.i + 1 >= argc) {
+				args_error(&a, "option -grid needs two counts, nx and ny");
+				a.i = argc;
+			} else {
+				o->grid[0] = argv[a.i++];
+				o->grid[1] = argv[a.i++];
+			}
+		} else if (args_str(&a, "-method", &o->method))
 			;
 		else if (args_str(&a, "-bf", &o->bf))
 			;
@@ -159,9 +171,24 @@ int main(int argc, char **argv)
 	double defocus = 0;
 	if (o.defocus)
 		defocus = override_value("-defocus", o.defocus, -DEFOCUS_MAX, DEFOCUS_MAX);
+	long gnx = 0, gny = 0;
+	if (o.grid[0] && (!num_parse_count(o.grid[0], 2, SPLAT_MAX_GRID, &gnx) ||
+			  !num_parse_count(o.grid[1], 2, SPLAT_MAX_GRID, &gny)))
+		die_status(EXIT_USAGE, "option -grid: expected two counts from 2 to %d, found "
+			   "\"%.40s %.40s\"", SPLAT_MAX_GRID, o.grid[0], o.grid[1]);
 	struct splat_input *in = fmt_splat_read(o.input);
 	if (o.defocus)
 		in->defocus = defocus;
+	if (o.grid[0]) {
+		/* the same bound as the grid statement's, and an image stack's */
+		in->nx = (int)gnx;
+		in->ny = (int)gny;
+		if (in->planes && (double)in->planes * gnx * gny >
+		    (double)SPLAT_MAX_GRID * SPLAT_MAX_GRID)
+			die_status(EXIT_USAGE, "option -grid: %d planes of %dx%d points are more "
+				   "than %d x %d values", in->planes, in->nx, in->ny, SPLAT_MAX_GRID,
+				   SPLAT_MAX_GRID);
+	}
 	struct vfilm vf;
 	vector_film_read(&vf, in, o.input, o.bf);
 	const struct splat_mask *m = &in->mask;

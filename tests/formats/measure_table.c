@@ -6,7 +6,10 @@
  * for an undefined angle), then read back: every value must equal the
  * written value rounded to its resolution (exact: the printed form reads
  * back to the same double), and a rewrite must give the same bytes.
- * A header other than the measure columns keeps its extra values.
+ * A header other than the measure columns keeps its extra values.  The
+ * optional last column err (measure -accuracy) is written after the
+ * feature's columns, rounded to 1e-6 um, read back to the same value, and
+ * does not change the kind of feature; a negative err is refused.
  */
 #include "fmt_measure.h"
 
@@ -49,8 +52,8 @@ static void put_text(const char *path, const char *text)
 int main(void)
 {
 	struct measure_row hr[2] = {
-		{-0.63, 0.8100004, {0.51530000049, 0.81, 0.7999996}},
-		{-0.07, 1.1, {0.950331, 1.1, 1.1}},
+		{-0.63, 0.8100004, {0.51530000049, 0.81, 0.7999996}, 0},
+		{-0.07, 1.1, {0.950331, 1.1, 1.1}, 0},
 	};
 	struct measure_table h = {.hole = 1, .nrows = 2, .rows = hr, .have_swa = 1,
 				  .swa = 84.50049, .resist_loss = 0.0200001, .cleared = 1};
@@ -64,7 +67,7 @@ int main(void)
 	const char *got = slurp("hole.tab");
 	expect(got && strcmp(got, want_hole) == 0, "the hole's table is not the expected text");
 
-	struct measure_row sr[1] = {{0, 0, {0.25, -0.25, 0}}};
+	struct measure_row sr[1] = {{0, 0, {0.25, -0.25, 0}, 0}};
 	struct measure_table s = {.hole = 0, .nrows = 1, .rows = sr, .have_swa = 1,
 				  .swa = NAN, .resist_loss = 0, .cleared = 0};
 	fmt_measure_write("stretch.tab", &s);
@@ -89,6 +92,30 @@ int main(void)
 	expect(!r.hole && r.ncols == 4 && r.nrows == 1 && r.rows[0].v[1] == -0.25,
 	       "stretch: kind, columns or values");
 	expect(r.have_swa && isnan(r.swa) && r.cleared == 0, "stretch: swa - or cleared no");
+	fmt_measure_free(&r);
+
+	/* the err column, after a hole's and after a stretch's columns */
+	hr[0].err = 0.0123456789;
+	hr[1].err = 0;
+	h.have_err = 1;
+	fmt_measure_write("err.tab", &h);
+	got = slurp("err.tab");
+	expect(got && strcmp(got, "# z cd area dx dy err\n"
+			      "-0.63 0.81 0.5153 0.81 0.8 0.012346\n"
+			      "-0.07 1.1 0.950331 1.1 1.1 0\n"
+			      "# swa 84.5\n# resist_loss 0.02\n# cleared yes\n") == 0,
+	       "err: the hole's table with err is not the expected text");
+	fmt_measure_read("err.tab", &r);
+	expect(r.hole && r.have_err && r.ncols == 6 && r.rows[0].err == 0.012346 &&
+	       r.rows[0].v[2] == 0.8 && r.rows[1].err == 0, "err: hole read back");
+	fmt_measure_free(&r);
+	put_text("err2.tab", "# z cd lo hi err\n0.1 0.5 -0.25 0.25 0.002\n# cleared yes\n");
+	fmt_measure_read("err2.tab", &r);
+	expect(!r.hole && r.have_err && r.ncols == 5 && r.rows[0].err == 0.002 &&
+	       r.rows[0].v[1] == 0.25, "err: stretch read back");
+	fmt_measure_free(&r);
+	fmt_measure_read("hole.tab", &r);
+	expect(!r.have_err, "err: a table without err has none");
 	fmt_measure_free(&r);
 
 	/* another tool's columns; no swa or resist_loss line; #key form */

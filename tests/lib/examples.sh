@@ -8,6 +8,9 @@
 # (examples/004-007); 001-all.sh and 002-deloop.sh take every other one, so
 # an example added later is covered without a new test.
 EXAMPLES_OWN="defect corner-defect"
+# The examples whose run.sh makes surfaces for measure (a contact at the
+# cell's centre): example_all measures every curves.plot they leave.
+EXAMPLES_MEASURED="car-arf-contact contact-highna"
 
 # examples_rest: the 3D examples not in EXAMPLES_OWN, one name a line.
 examples_rest() {
@@ -23,7 +26,9 @@ examples_rest() {
 # (sample3D: splat, bleach, etch, pdraw) and leaves, in every run
 # directory, a non-empty curves.plot that reads back as a plot file with
 # one set per print time, its curves.plot.2D, and a dataplot.ps with a page
-# per set that ghostscript renders (when installed).
+# per set that ghostscript renders (when installed).  For the examples of
+# EXAMPLES_MEASURED, measure reads every curves.plot (the hole at 0 0, at
+# 10, 50 and 90 % of the resist) and finds the hole open at 90 %.
 example_all() {
 	_run=$TOP/examples/$1/run.sh
 	[ -f "$_run" ] || fail "no example $1"
@@ -38,6 +43,13 @@ example_all() {
 		_pages=$(grep -c '^%%Page: ' "$_d/dataplot.ps")
 		[ "$_sets" -eq "$_pages" ] || fail "$_d: $_sets sets but $_pages pages"
 		if command -v gs >/dev/null; then gs_check "$_d/dataplot.ps"; fi
+		case " $EXAMPLES_MEASURED " in
+		*" $1 "*)
+			measure -rel 10,50,90 -hole 0 0 -o "$_d/cd.check" "$_plot" 2>"$_d/measure.err" ||
+				fail "$_plot: measure refuses the example's surface: $(head -n 1 "$_d/measure.err")"
+			awk '!/^#/ { cd = $2 } END { exit !(cd > 0) }' "$_d/cd.check" ||
+				fail "$_plot: no hole at 90 %: $(cat "$_d/cd.check")" ;;
+		esac
 		_n=$((_n + 1))
 	done
 	[ $_n -gt 0 ] || fail "example $1 produced no curves.plot"

@@ -56,6 +56,8 @@ void fmt_measure_write(const char *path, const struct measure_table *t)
 	fputc('#', f);
 	for (int i = 0; i < ncols; i++)
 		fprintf(f, " %s", col[i].name);
+	if (t->have_err)
+		fputs(" err", f);
 	fputc('\n', f);
 	for (int i = 0; i < t->nrows; i++) {
 		const struct measure_row *w = &t->rows[i];
@@ -63,6 +65,8 @@ void fmt_measure_write(const char *path, const struct measure_table *t)
 		put(f, w->cd, col[1].res, 0);
 		for (int k = 2; k < ncols; k++)
 			put(f, w->v[k - 2], col[k].res, 0);
+		if (t->have_err)
+			put(f, w->err, RES_LEN, 0);
 		fputc('\n', f);
 	}
 	if (t->have_swa) {
@@ -105,17 +109,20 @@ void fmt_measure_write_holes(const char *path, const struct measure_hole *h, siz
 	aout_commit(a);
 }
 
-/* The header "# z cd ...": its column count, 0 if it is not one. */
-static int header(const struct fmt_lines *l, int *hole)
+/* The header "# z cd ... [err]": its column count, 0 if it is not one;
+ * *have_err when the last of more than two columns is err. */
+static int header(const struct fmt_lines *l, int *hole, int *have_err)
 {
 	if (l->ntok < 3 || strcmp(l->tok[0], "#") != 0 ||
 	    strcmp(l->tok[1], hole_cols[0].name) != 0 || strcmp(l->tok[2], hole_cols[1].name) != 0)
 		return 0;
 	int ncols = l->ntok - 1;
+	*have_err = ncols > 2 && strcmp(l->tok[ncols], "err") == 0;
+	ncols -= *have_err;
 	*hole = ncols == HOLE_NCOLS;
 	for (int i = 2; *hole && i < ncols; i++)
 		*hole = strcmp(l->tok[i + 1], hole_cols[i].name) == 0;
-	return ncols;
+	return ncols + *have_err;
 }
 
 /* A '#' line after the header: "# swa DEG" ("-" where the angle is
@@ -160,7 +167,7 @@ void fmt_measure_read(const char *path, struct measure_table *t)
 		if (l.ntok == 0)
 			continue;
 		if (t->ncols == 0) {
-			if (!(t->ncols = header(&l, &t->hole)))
+			if (!(t->ncols = header(&l, &t->hole, &t->have_err)))
 				die("%s:%ld: not a measure table: expected a header \"# z cd ...\"",
 				    path, l.line);
 			continue;
@@ -172,10 +179,13 @@ void fmt_measure_read(const char *path, struct measure_table *t)
 		if (l.ntok != t->ncols)
 			die("%s:%ld: expected %d fields as the header names, found %d", path,
 			    l.line, t->ncols, l.ntok);
-		struct measure_row w = {0, 0, {0, 0, 0}};
+		struct measure_row w = {0, 0, {0, 0, 0}, 0};
 		w.z = fmt_lines_num(&l, 0, "z");
 		w.cd = fmt_lines_num(&l, 1, "cd");
-		for (int i = 2; i < t->ncols; i++) {
+		int nv = t->ncols - t->have_err;
+		if (t->have_err && !((w.err = fmt_lines_num(&l, nv, "err")) >= 0))
+			die("%s:%ld: err: expected an error estimate >= 0", path, l.line);
+		for (int i = 2; i < nv; i++) {
 			double v = fmt_lines_num(&l, i, "value");
 			if (i - 2 < MEASURE_MAX_EXTRA)
 				w.v[i - 2] = v;

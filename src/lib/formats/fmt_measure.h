@@ -21,6 +21,9 @@
  *   # lcdu 0.004               3 sample sigma of the cds ("-": < 2 holes)
  *   # holes 49
  *
+ * With measure -accuracy (and the drivers' -accuracy) a last column
+ * "err" follows: the estimated discretisation error of cd, um.
+ *
  * measure writes it; femwin -collect (fem) reads it for fem.dat.  The
  * reader takes any further column names after "z cd" (a table another
  * tool wrote), and skips '#' lines it does not know.
@@ -37,11 +40,13 @@ enum { MEASURE_MAX_EXTRA = 3 };
 struct measure_row {
 	double z, cd;                   /* um */
 	double v[MEASURE_MAX_EXTRA];    /* area dx dy, or lo hi */
+	double err;                     /* um, with have_err */
 };
 
 struct measure_table {
 	int hole;               /* columns z cd area dx dy; else z cd lo hi */
-	int ncols;              /* read: columns the header names */
+	int have_err;           /* a last column err (optional) */
+	int ncols;              /* read: columns the header names, err included */
 	int nrows;
 	struct measure_row *rows;
 	int have_swa;           /* a "# swa" line */

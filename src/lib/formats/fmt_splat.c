@@ -22,9 +22,9 @@
 #include <string.h>
 #include <strings.h>
 
-/* Largest grid side and cutline count: far beyond any use, small enough
- * that nx*ny doubles cannot overflow or exhaust memory by accident. */
-enum { SPLAT_MAX_GRID = 10001, SPLAT_MAX_CUTPTS = 1000000 };
+/* Largest cutline count: far beyond any use (SPLAT_MAX_GRID, the grid's
+ * bound, is in fmt_splat.h for splat -grid). */
+enum { SPLAT_MAX_CUTPTS = 1000000 };
 /* Highest fringe Zernike term implemented (the usual 37-term set). */
 enum { SPLAT_MAX_ZERNIKE = 37 };
 /* What a lithography user can mean (man/man5/splat.5): wavelengths from

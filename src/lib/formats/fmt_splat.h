@@ -148,6 +148,11 @@ struct splat_input {
 	long na_line;                   /* line of the na statement (0: default) */
 };
 
+/* Largest grid side: far beyond any use, small enough that nx*ny doubles
+ * cannot overflow or exhaust memory by accident (the grid statement and
+ * splat -grid); an image stack's planes * nx * ny is bounded by its square. */
+enum { SPLAT_MAX_GRID = 10001 };
+
 /* Most planes of an image stack: far beyond any use (a plane every
  * nanometre of a micrometre film), small enough to bound the memory. */
 enum { SPLAT_MAX_PLANES = 1001 };

@@ -1,0 +1,107 @@
+# sample3D -measure -accuracy: the CDs it reports hold the accuracy asked.
+# A 1.25 um contact (examples/contact's optics and baked resist) on a
+# small 3.2 um cell at a coarse 17 x 17 image grid and nz 60:
+#  - -accuracy 6 prints a table with the column err, every err within 6 %
+#    of its cd, and every cd within 6 % of a reference refined by hand to
+#    4 times the inputs' grids (splat -grid 65 65, bleach -nz 237, fast
+#    marching); the files left are those of the table (measure on
+#    curves.plot gives its cds again), and the tables of the levels are in
+#    accuracy/, the first without err;
+#  - -accuracy check keeps the inputs' grid: its cds are byte for byte
+#    those of the plain run, and its err is |cd - cd at grid 9 x 9, nz 31|
+#    / (r - 1) (the level below, solved here by hand; order 1 assumed; r =
+#    59/30, the smallest of the spacing ratios 16/8 and 59/30) within 3e-6
+#    um (the tables' rounding, over r - 1);
+#  - without an engine option, -measure develops by fast marching: the
+#    same curves.plot byte for byte as -method fmm;
+#  - -accuracy without -measure, with -cf, or with a bad value (0, 100,
+#    1x) is a usage error (status 2) naming the problem, before splat runs;
+#    a bare -accuracy (1 %) leaves the next word to be an option.
+. "$TOP/tests/lib/common.sh"
+cat >mask.in <<'IN'
+wavelength 0.436
+na 0.28
+sigma 0.5
+background dark
+window -1.6 1.6 -1.6 1.6
+rect -0.625 -0.625 0.625 0.625
+grid 17 17
+contour image.cont
+IN
+sed 's/^grid nz.*/grid nz 60/' "$TOP/examples/contact/resist.in" >resist.in
+M="-rel 10,50,90 -hole 0 0"
+P=6
+
+mkdir acc && cd acc
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" -accuracy $P >table.txt ||
+	fail "sample3D -accuracy $P: $(cat table.txt)"
+head -n 1 table.txt | grep -q '^# z cd area dx dy err$' || fail "no err column: $(cat table.txt)"
+awk -v p=$P '!/^#/ { n++; if (!($6 <= p / 100 * $2)) { print "err " $6 " over " p " % of cd " $2; bad = 1 } }
+	END { exit bad || n != 3 }' table.txt || fail "err over $P %: $(cat table.txt)"
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M curves.plot | cut -d' ' -f1-5 >again.txt
+grep -v '^#' table.txt | cut -d' ' -f1-5 >printed.txt
+grep -v '^#' again.txt >again-rows.txt
+same printed.txt again-rows.txt
+[ "$(ls accuracy/*.dat | wc -l)" -ge 2 ] || fail "accuracy/ holds fewer than two levels: $(ls accuracy)"
+head -n 1 accuracy/9x9x31.dat | grep -q err && fail "the coarsest level has an err column"
+cd ..
+
+# the reference, 4 times the inputs' grids, by hand
+splat -q -grid 65 65 -o ref.cont mask.in || fail "splat reference"
+bleach -q -nz 237 -o ref.bin ref.cont resist.in || fail "bleach reference"
+etch -q -et 60 -method fmm -last -no2d -o ref.plot ref.bin || fail "etch reference"
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -o ref.txt ref.plot || fail "measure reference"
+paste -d' ' ref.txt acc/table.txt | awk -v p=$P '!/^#/ { d = $2 - $7; if (d < 0) d = -d
+	if (d > p / 100 * $2) { print "cd " $7 " at z " $1 ": reference " $2; bad = 1 } }
+	END { exit bad }' || fail "a cd is off the reference by more than $P %"
+
+# -accuracy check: the inputs' grid, err against the level below
+mkdir chk plain && cd plain
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" >table.txt ||
+	fail "sample3D -measure"
+cd ../chk
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" -accuracy check >table.txt ||
+	fail "sample3D -accuracy check"
+cut -d' ' -f1-5 table.txt | grep -v '^#' >cds.txt
+grep -v '^#' ../plain/table.txt >plain.txt
+same cds.txt plain.txt
+cd ..
+splat -q -grid 9 9 -o low.cont mask.in && bleach -q -nz 31 -o low.bin low.cont resist.in &&
+	etch -q -et 60 -method fmm -last -no2d -o low.plot low.bin || fail "the level below, by hand"
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -o low.txt low.plot
+paste -d' ' low.txt chk/table.txt | awk '!/^#/ { d = $2 - $7; if (d < 0) d = -d; d /= 59 / 30 - 1
+	e = $11 - d; if (e > 3e-6 || e < -3e-6) { print "err " $11 " at z " $1 ", expected " d; bad = 1 } }
+	END { exit bad }' || fail "-accuracy check: err is not |cd - cd below|"
+
+# the default engine with -measure is fast marching
+mkdir fmm && cd fmm
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -method fmm -measure "$M" >/dev/null ||
+	fail "sample3D -method fmm"
+same curves.plot ../plain/curves.plot
+cd ..
+
+# usage errors, before any stage runs
+for acc in "" 0 100 1x 1 check; do
+	mkdir u && cd u
+	st=0
+	if [ "$acc" = 1 ] || [ "$acc" = check ]; then
+		# a good value without -measure
+		sample3D -q -if ../mask.in -bf ../resist.in -et 60 -accuracy $acc >/dev/null 2>err.txt || st=$?
+	else
+		sample3D -q -if ../mask.in -bf ../resist.in -et 60 -measure "$M" -accuracy $acc \
+			-x >/dev/null 2>err.txt || st=$?
+	fi
+	[ $st -eq 2 ] || fail "sample3D -accuracy '$acc': exit $st, expected 2"
+	case $acc in 1|check) grep -q "needs -measure" err.txt ;; "") grep -q "unknown option -x" err.txt ;;
+	*) grep -q "expected a percentage" err.txt ;; esac || fail "-accuracy '$acc': $(head -n 1 err.txt)"
+	[ ! -e image.cont ] || fail "sample3D $args: splat ran"
+	cd .. && rm -rf u
+done
+splat -q mask.in
+st=0
+sample3D -q -cf image.cont -bf resist.in -et 60 -measure "$M" -accuracy 2 >/dev/null 2>&1 || st=$?
+[ $st -eq 2 ] || fail "-accuracy with -cf: exit $st, expected 2"
+exit 0
