@@ -16,6 +16,7 @@
  * as strtod is).
  */
 #include "fmt_gds.h"
+#include "budget.h"
 #include "lex.h"
 #include "util.h"
 
@@ -69,6 +70,8 @@ struct cell {
 	int referenced;
 	int64_t bb[4];          /* bounding box in its own frame, dbu (xmin xmax ymin ymax) */
 	int empty;
+	int counted;            /* cnt holds the counts of the layer asked */
+	double cnt[3];          /* flattened: shapes on the layer, their vertices, visits */
 };
 
 struct gds_lib {
@@ -714,10 +717,11 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 				px[i] = si32(p + 8 * i);
 				py[i] = si32(p + 8 * i + 4);
 			}
-			/* an array is refused whole before its first copy */
+			/* an array is refused whole before its first copy (the
+			 * counts of shapes() make this a last guard) */
 			if ((double)e->cols * e->rows > (double)(g->max_visit - f->visits))
-				gds_die(g, e->off, "an AREF of %d x %d copies takes flattening past "
-					"%ld elements; refusing", e->cols, e->rows, g->max_visit);
+				gds_die(g, e->off, "%s takes flattening past %ld elements; refusing",
+					e->kind == R_AREF ? "an AREF" : "an SREF", g->max_visit);
 			for (int j = 0; j < e->rows; j++)
 				for (int i = 0; i < e->cols; i++) {
 					double x = px[0], y = py[0];
@@ -738,6 +742,149 @@ static void flatten(struct flat *f, int ci, const struct xform *t)
 			continue;
 		shape(f, e, t);
 	}
+}
+
+/* Per-operation costs of flattening, for the estimate made before it:
+ * seconds per element visited and per vertex written, and bytes per
+ * vertex and per shape of the output (measured on the development
+ * machine, a 2020 x86-64 core, with tests/lib/mkgds arrays). */
+static const double T_VISIT = 3e-8, T_VERT = 1.5e-8, B_VERT = 16, B_SHAPE = 24;
+
+/* The vertices a shape element adds to the output: its points, or for a
+ * path its outline (two sides, the ends, round ends as polygons). */
+static double elem_verts(const struct gds_lib *g, const struct elem *e)
+{
+	if (e->kind != R_PATH)
+		return e->nxy;
+	double v = 2.0 * e->nxy + 4;
+	if (e->pathtype == 1)
+		v += 2.0 * poly_circle_sides(fabs((double)e->width) / 2, 1e-3 / g->um);
+	return v;
+}
+
+static int on_layer(const struct flat *f, const struct elem *e)
+{
+	return e->layer == f->layer && (f->datatype < 0 || e->datatype == f->datatype);
+}
+
+/* Bottom-up counts of a cell flattened whole (no window): its shapes on
+ * the layer, their vertices and the elements flattening visits, from
+ * those of the cells it references times their copies.  Doubles: 40
+ * levels of two SREFs are 2^40 copies.  cell_bbox has run from the top
+ * cell, so there is no loop and the depth is bounded. */
+static void cell_count(const struct flat *f, int ci)
+{
+	struct cell *c = &((struct gds_lib *)f->g)->c[ci];
+	if (c->counted)
+		return;
+	double n[3] = {0, 0, 0};
+	for (size_t k = c->first; k < c->first + c->n; k++) {
+		const struct elem *e = &f->g->e[k];
+		n[2] += 1;
+		if (e->kind == R_SREF || e->kind == R_AREF) {
+			cell_count(f, e->ref);
+			const double *s = f->g->c[e->ref].cnt, m = (double)e->cols * e->rows;
+			n[0] += m * s[0];
+			n[1] += m * s[1];
+			n[2] += m * s[2] + (m - 1);
+		} else if (on_layer(f, e)) {
+			n[0] += 1;
+			n[1] += elem_verts(f->g, e);
+		}
+	}
+	memcpy(c->cnt, n, sizeof n);
+	c->counted = 1;
+}
+
+/* The counts of what flattening cell ci under t keeps with the window:
+ * a cell wholly inside adds its bottom-up counts, one wholly outside
+ * nothing, and one across the window's edge is walked into.  After
+ * COUNT_STEPS steps the rest is counted whole (an upper bound), so the
+ * count itself never runs away. */
+enum { COUNT_STEPS = 2000000 };
+static void walk_count(struct flat *f, int ci, const struct xform *t, double *n, long *steps)
+{
+	const struct gds_lib *g = f->g;
+	const struct cell *c = &g->c[ci];
+	if (c->empty)
+		return;
+	int inside = !f->cull || *steps > COUNT_STEPS;
+	if (!inside) {
+		double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+		for (int u = 0; u < 2; u++)
+			for (int v = 0; v < 2; v++) {
+				double x, y;
+				apply(t, (double)c->bb[u], (double)c->bb[2 + v], &x, &y);
+				x0 = fmin(x0, x); x1 = fmax(x1, x);
+				y0 = fmin(y0, y); y1 = fmax(y1, y);
+			}
+		if (box_misses(f, x0, x1, y0, y1))
+			return;
+		inside = x0 >= f->win[0] && x1 <= f->win[1] && y0 >= f->win[2] && y1 <= f->win[3];
+	}
+	if (inside) {
+		for (int i = 0; i < 3; i++)
+			n[i] += c->cnt[i];
+		return;
+	}
+	for (size_t k = c->first; k < c->first + c->n; k++) {
+		const struct elem *e = &g->e[k];
+		++*steps;
+		n[2] += 1;
+		if (e->kind != R_SREF && e->kind != R_AREF) {
+			if (on_layer(f, e)) {
+				n[0] += 1;
+				n[1] += elem_verts(g, e);
+			}
+			continue;
+		}
+		const unsigned char *p = g->buf + e->xy;
+		double px[3], py[3];
+		for (int i = 0; i < e->nxy; i++) {
+			px[i] = si32(p + 8 * i);
+			py[i] = si32(p + 8 * i + 4);
+		}
+		for (int j = 0; j < e->rows; j++)
+			for (int i = 0; i < e->cols; i++) {
+				double x = px[0], y = py[0];
+				if (e->kind == R_AREF) {
+					x += (px[1] - px[0]) * i / e->cols + (px[2] - px[0]) * j / e->rows;
+					y += (py[1] - py[0]) * i / e->cols + (py[2] - py[0]) * j / e->rows;
+					n[2] += i || j;
+				}
+				struct xform ct = compose(t, e, x, y);
+				walk_count(f, e->ref, &ct, n, steps);
+				++*steps;
+			}
+	}
+}
+
+/* Refuses, before flattening, what would run away: more visits than the
+ * limit, or more vertices than the memory or an hour allow (then -big). */
+static void check_counts(struct flat *f, int top)
+{
+	struct gds_lib *g = (struct gds_lib *)f->g;
+	for (int i = 0; i < g->nc; i++)
+		g->c[i].counted = 0;
+	cell_count(f, top);
+	double n[3] = {0, 0, 0};
+	long steps = 0;
+	struct xform id = {1, 0, 0, 1, 0, 0, 1, 0, 0};
+	walk_count(f, top, &id, n, &steps);
+	const char *name = g->c[top].name;
+	double secs = n[2] * T_VISIT + n[1] * T_VERT, bytes = n[1] * B_VERT + n[0] * B_SHAPE;
+	if (!budget_big() && !(secs <= BUDGET_SECONDS && bytes <= budget_memory())) {
+		char b[16];
+		gds_die(g, g->c[top].off, "flattening cell \"%.60s\" layer %d gives %.3g shapes "
+			"of %.3g vertices, about %s of memory and %.2g s, beyond the limits: use "
+			"-big or SAMPLE3D_BIG=1 to run it anyway", name, f->layer, n[0], n[1],
+			budget_bytes(b, bytes), secs);
+	}
+	/* -big or not, the walk itself is bounded */
+	if (n[2] > (double)g->max_visit)
+		gds_die(g, g->c[top].off, "flattening cell \"%.60s\" visits %.3g elements, more "
+			"than %ld (references of references, arrays of arrays); refusing", name,
+			n[2], g->max_visit);
 }
 
 static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
@@ -815,6 +962,7 @@ static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
 		double s = 1e-6 * (fabs(f.win[1] - f.win[0]) + fabs(f.win[3] - f.win[2]));
 		f.win[0] -= s; f.win[1] += s; f.win[2] -= s; f.win[3] += s;
 	}
+	check_counts(&f, top);
 	struct xform id = {1, 0, 0, 1, 0, 0, 1, 0, 0};
 	flatten(&f, top, &id);
 	return f.shapes;

@@ -65,6 +65,11 @@ static const char *seconds_text(char *buf, double s)
 	return buf;
 }
 
+int budget_big(void)
+{
+	return big || big_env();
+}
+
 void budget_check(const char *where, const char *what, double seconds, double bytes)
 {
 	double mem = budget_memory();
