@@ -66,6 +66,66 @@ struct rec {
 	unsigned dlen;
 };
 
+/* A BOUNDARY whose edges cross (properly: one passes through the other;
+ * touching, as keyhole polygons do, is allowed) has no one filling: it
+ * is refused, as splat's polygon statement refuses it.  Edges sorted by
+ * their least x are swept, each tested against the edges still open; a
+ * crossing polygon is found at its first crossing, a simple one costs the
+ * overlaps of its edges' x ranges (at most 8191 points: an XY record). */
+static int64_t orient64(const int64_t *a, const int64_t *b, const int64_t *c)
+{
+	int64_t v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+	return (v > 0) - (v < 0);
+}
+
+static const int64_t *cross_pts;
+static int cmp_edge_x(const void *x, const void *y)
+{
+	int i = *(const int *)x, j = *(const int *)y;
+	int64_t a = cross_pts[2 * i] < cross_pts[2 * i + 2] ? cross_pts[2 * i] : cross_pts[2 * i + 2];
+	int64_t b = cross_pts[2 * j] < cross_pts[2 * j + 2] ? cross_pts[2 * j] : cross_pts[2 * j + 2];
+	return a != b ? (a > b) - (a < b) : (i > j) - (i < j);
+}
+
+static void check_crossing(const struct gds_lib *g, const struct elem *e)
+{
+	int n = e->nxy - 1;     /* edges: the last point closes the ring */
+	if (n < 4)
+		return;
+	int64_t *p = xreallocarray(NULL, 2 * (size_t)n + 2, sizeof *p);
+	int *ord = xreallocarray(NULL, (size_t)n, sizeof *ord);
+	for (int i = 0; i <= n; i++) {
+		p[2 * i] = si32(g->buf + e->xy + 8 * (size_t)i);
+		p[2 * i + 1] = si32(g->buf + e->xy + 8 * (size_t)i + 4);
+		if (i < n)
+			ord[i] = i;
+	}
+	cross_pts = p;
+	qsort(ord, (size_t)n, sizeof *ord, cmp_edge_x);
+	int bad_i = -1, bad_j = -1;
+	for (int u = 0; u < n && bad_i < 0; u++) {
+		int i = ord[u];
+		const int64_t *a = p + 2 * i, *b = a + 2;
+		for (int v = u - 1; v >= 0; v--) {
+			int j = ord[v];
+			const int64_t *c = p + 2 * j, *d = c + 2;
+			if ((c[0] > d[0] ? c[0] : d[0]) < (a[0] < b[0] ? a[0] : b[0]))
+				continue;       /* closed before this edge opens */
+			if (orient64(a, b, c) * orient64(a, b, d) < 0 &&
+			    orient64(c, d, a) * orient64(c, d, b) < 0) {
+				bad_i = i < j ? i : j;
+				bad_j = i < j ? j : i;
+				break;
+			}
+		}
+	}
+	free(ord);
+	free(p);
+	if (bad_i >= 0)
+		gds_die(g, e->off, "BOUNDARY crosses itself: edge %d meets edge %d (of %d)",
+			bad_i + 1, bad_j + 1, n);
+}
+
 /* The record at *pos; dies if it does not fit. */
 static void next_rec(const struct gds_lib *g, size_t *pos, struct rec *r)
 {
@@ -228,6 +288,8 @@ done:
 		gds_die(g, e->off, "%s has %d XY points, expected %d", rname(e->kind), e->nxy, need);
 	if (e->kind == R_BOUNDARY && e->nxy < 3)
 		gds_die(g, e->off, "BOUNDARY has %d XY points, expected at least 4", e->nxy);
+	if (e->kind == R_BOUNDARY)
+		check_crossing(g, e);
 	if ((e->kind == R_SREF || e->kind == R_AREF) && !have_name)
 		gds_die(g, e->off, "%s without SNAME", rname(e->kind));
 	if (e->kind == R_AREF && !have_cr)
