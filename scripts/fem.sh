@@ -10,7 +10,7 @@
 # bleach, etch and measure per point) run by GNU make (-j, resumable, -k), or
 # a Slurm job array (-slurm: DIR/fem.sbatch and DIR/submit.sh).  The tables
 # and the window are computed by femwin(1), the plots drawn by drawplot(1).
-set -eu
+set -euf	# -f: the words of -measure, -etch and -sbatch are never globbed
 
 prog=fem
 # the programs and the etch pass-through options (etchopts.sh, shared with
@@ -23,7 +23,7 @@ usage() {
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
            (or -points F:D,F:D,... instead of -dose and -focus)
-           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-d DIR] [-j N] [-keep] [-n]
+           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-d DIR] [-j N] [-keep] [-n] [-big]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
   -if FILE      splat input file (the mask and the optics)
@@ -50,6 +50,7 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
   -j N          points run at once (make -j N; default: the cores)
   -keep         keep every point's rate file and curves.plot
   -n            write DIR and its Makefile, run nothing
+  -big          allow more than 10000 points (also SAMPLE3D_BIG=1)
   -slurm        write DIR/fem.sbatch and DIR/submit.sh, submit nothing
   -chunk K      with -slurm: K points per array task (default 1)
   -sbatch OPTS  with -slurm: options submit.sh gives sbatch (e.g. "-p short")
@@ -59,16 +60,16 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
 U
 	etchopts_usage
 }
-die() { echo "$prog: $*" >&2; exit 1; }
+die() { printf '%s: %s\n' "$prog" "$*" >&2; exit 1; }
 # a usage error: one line, exit 2 (the usage is fem --help)
-bad() { echo "$prog: $*; see fem --help" >&2; exit 2; }
+bad() { printf '%s: %s; see fem --help\n' "$prog" "$*" >&2; exit 2; }
 # a wrong value: one line, exit 2
-badv() { echo "$prog: $*" >&2; exit 2; }
-say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
+badv() { printf '%s: %s\n' "$prog" "$*" >&2; exit 2; }
+say() { [ -n "$quiet" ] || printf '%s: %s\n' "$prog" "$*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
-dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet=""
+dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet="" big=""
 etchopts="" points="" seeds="" accuracy=""
 while [ $# -gt 0 ]; do
 	case $1 in
@@ -87,6 +88,7 @@ while [ $# -gt 0 ]; do
 	-j) need_val "$@"; jobs=$2; shift 2 ;;
 	-keep) keep=yes; shift ;;
 	-n) dryrun=yes; shift ;;
+	-big) big=yes; shift ;;
 	-slurm) slurm=yes; shift ;;
 	-chunk) need_val "$@"; chunk=$2; shift 2 ;;
 	-sbatch) need_val "$@"; sbopts=$2; shift 2 ;;
@@ -97,15 +99,36 @@ while [ $# -gt 0 ]; do
 	esac
 done
 
-isnum() { # isnum WORD: a decimal number
+nl='
+'
+isnum() { # isnum WORD: a decimal number (one line: grep would take any line)
+	case $1 in *"$nl"*) return 1 ;; esac
 	printf '%s\n' "$1" | grep -Eq '^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$'
+}
+# Every word fem writes into DIR/Makefile and the Slurm scripts is quoted, so
+# that make and sh pass it on as the one word the checks below saw, whatever
+# it holds ($, `, quotes, ;, &, |, <, >, #, %, \): a word with a newline or
+# a carriage return cannot be written on one line and is refused.
+plainword() { # plainword WHAT WORD: refuse a word that cannot be quoted
+	case $2 in *"$nl"*|*"$(printf '\r')"*) badv "$1: a word with a newline or a carriage return" ;; esac
+}
+shq() { # shq WORD: WORD in single quotes for sh (a ' becomes '\'')
+	printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
+}
+mkq() { # mkq WORD: WORD as a make variable's value that expands to shq WORD:
+	# $ becomes $$, and a # with k backslashes before it 2k+1 backslashes
+	# and the # (make's comment escape halves a run of backslashes)
+	shq "$1" | sed 's/\$/$$/g; s/\(\\*\)#/\1\1\\#/g'
+}
+mkwords() { # mkwords WHAT WORDS: the words (split at blanks) through mkq
+	for w in $2; do plainword "$1" "$w"; printf ' %s' "$(mkq "$w")"; done
 }
 posnum() { isnum "$1" && awk -v v="$1" 'BEGIN { exit !(v > 0) }'; }
 
 # the programs: beside this script first ($here), then PATH
 findprog() {
 	if [ -x "$here/$1" ] && [ ! -d "$here/$1" ]; then
-		echo "$here/$1"
+		printf '%s\n' "$here/$1"
 	else
 		command -v "$1" 2>/dev/null || die "cannot find the program $1 (beside $0 or on PATH)"
 	fi
@@ -150,35 +173,81 @@ else
 fi
 [ -z "$slurm" ] || [ -z "$dryrun" ] || bad "-slurm already runs nothing: drop -n"
 [ -n "$slurm" ] || { [ "$chunk" = 1 ] && [ -z "$sbopts" ]; } || bad "-chunk and -sbatch go with -slurm"
+# measure's -s names a set of etch -pt: a whole number (the probe, with one
+# set, cannot try it); fem gives measure and etch their output files
+skipnext=""
 for w in $margs; do
+	plainword "-measure" "$w"
+	if [ -n "$skipnext" ]; then
+		case $w in ''|*[!0-9]*) badv "-measure: -s $w: expected a set number (a whole number)" ;; esac
+		skipnext=""
+	fi
 	case $w in
 	-o|-plot) badv "-measure: fem gives measure its output file; drop $w" ;;
+	-s) skipnext=yes ;;
 	esac
 done
-case $dir$(pwd)$here in *[!A-Za-z0-9._/+-]*) badv "-d $dir: use letters, digits and ._/+- only, in it and in the paths of the current directory and of fem (make needs plain names)" ;; esac
+[ -z "$skipnext" ] || badv "-measure: -s needs a set number"
+for w in $etchopts; do
+	plainword "-etch" "$w"
+	case $w in -o) badv "-etch: fem gives etch its output file; drop -o" ;; esac
+done
+for w in $sbopts; do plainword "-sbatch" "$w"; done
+plainword "-d" "$dir"
+plainword "the current directory" "$(pwd)"
+plainword "fem's directory" "$here"
 
-# expand LIST: first:last:step or a,b,c -> one value per line, ascending
-expand() { # expand WHAT LIST
-	case $2 in
-	*:*:*)
-		IFS=: read -r a b s <<E
-$2
-E
-		isnum "$a" && isnum "$b" && isnum "$s" || badv "-$1 $2: expected first:last:step"
-		awk -v a="$a" -v b="$b" -v s="$s" 'BEGIN {
-			if (!(s > 0)) exit 3
+# The most points without -big: a Makefile of 10000 points is written in a
+# few seconds and is already days of work on a workstation; a mistyped step
+# (1e-7 for 1e-1) is refused before it writes millions of rules.
+cap=10000
+[ -z "$big" ] && [ "${SAMPLE3D_BIG:-}" != 1 ] || cap=0
+# expand WHAT LIST: first:last:step or a,b,c -> one value per line (%.10g),
+# in one awk: a range whose step is below the values' resolution (it would
+# never advance, or two of its points would print alike) or that holds more
+# than cap points is refused in one line with its count, before any loop
+expand() {
+	case $2 in *"$nl"*) badv "-$1: a list on one line expected" ;; esac
+	printf '%s\n' "$2" | awk -v what="-$1 $2" -v cap="$cap" '
+	function isnum(w) { return w ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
+	function bad(m) { printf "fem: %s: %s\n", what, m >"/dev/stderr"; failed = 1; exit 2 }
+	function toomany(n) {
+		f = n < 1e15 ? "%.0f" : "%.3g"
+		bad(sprintf(f " points, more than %d: use -big or SAMPLE3D_BIG=1", n, cap))
+	}
+	{ line = $0 }
+	END {
+		if (failed) exit 2
+		if (line ~ /:.*:/) {
+			if (split(line, p, ":") != 3 || !isnum(p[1]) || !isnum(p[2]) || !isnum(p[3]))
+				bad("expected first:last:step")
+			a = p[1] + 0; b = p[2] + 0; s = p[3] + 0
+			if (!(s > 0)) bad("the step must be positive")
+			if (b < a) exit 0
+			n = int((b - a) / s + 1e-9) + 1
+			if (cap > 0 && !(n <= cap)) toomany(n)
+			if (a + s == a || b - s == b || !(n < 1e15))
+				bad(sprintf("the step %s is below the resolution of the values", p[3]))
+			last = ""
 			for (k = 0; a + k * s <= b + 1e-9 * s; k++) {
 				v = a + k * s
 				if (v < 1e-12 * s && v > -1e-12 * s) v = 0
-				printf "%.10g\n", v
+				t = sprintf("%.10g", v)
+				if (t == last)
+					bad(sprintf("the step %s is below the resolution of the values (%s twice)", p[3], t))
+				print t
+				last = t
 			}
-		}' || badv "-$1 $2: the step must be positive" ;;
-	*)
-		for v in $(echo "$2" | tr ',' ' '); do
-			isnum "$v" || badv "-$1 $2: $v is not a number"
-			awk -v v="$v" 'BEGIN { printf "%.10g\n", v + 0 }'
-		done ;;
-	esac
+			exit 0
+		}
+		m = split(line, w, ",")
+		if (cap > 0 && m > cap) toomany(m)
+		for (k = 1; k <= m; k++) {
+			if (w[k] == "") continue
+			if (!isnum(w[k])) bad(w[k] " is not a number")
+			printf "%.10g\n", w[k] + 0
+		}
+	}'
 }
 # -points f:d,...: the foci and doses it names, and inpts F D to keep only its points
 if [ -n "$points" ]; then
@@ -195,13 +264,16 @@ fvals=$(expand focus "$foci") || exit 2
 dvals=$(expand dose "$doses") || exit 2
 [ -n "$fvals" ] || badv "-focus $foci: no focus in that range"
 [ -n "$dvals" ] || badv "-dose $doses: no dose in that range"
-for v in $dvals; do posnum "$v" || badv "-dose $doses: doses must be positive ($v)"; done
+v=$(printf '%s\n' "$dvals" | awk '!($1 > 0) { print; exit }')
+[ -z "$v" ] || badv "-dose $doses: doses must be positive ($v)"
 printf '%s\n' "$fvals" | sort -c -u -g 2>/dev/null || badv "-focus $foci: give the foci in ascending order, each once"
 printf '%s\n' "$dvals" | sort -c -u -g 2>/dev/null || badv "-dose $doses: give the doses in ascending order, each once"
 nf=$(printf '%s\n' "$fvals" | wc -l)
 nd=$(printf '%s\n' "$dvals" | wc -l)
 npts=$((nf * nd))
 [ -z "$points" ] || npts=$(printf '%s\n' "$pts" | sort -u | wc -l)
+[ "$cap" -eq 0 ] || [ "$npts" -le "$cap" ] ||
+	badv "$npts points ($nf foci x $nd doses), more than $cap: use -big or SAMPLE3D_BIG=1"
 
 [ -r "$mask" ] || die "$mask: cannot read the splat input file"
 [ -r "$resist" ] || die "$resist: cannot read the bleach input file"
@@ -266,8 +338,8 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	set -- $1 "$2"
 	say "accuracy: focus $nomf dose $nomd: splat -grid $1 $2, bleach -nz $3"
-	"$SPLAT" -q -defocus "$nomf" -grid "$1" "$2" -o "$dir/accuracy/image.cont" \
-		"$dir/mask.in" || return 1
+	"$SPLAT" -q -defocus "$nomf" -grid "$1" "$2" -bf "$dir/resist.in" \
+		-o "$dir/accuracy/image.cont" "$dir/mask.in" || return 1
 	"$BLEACH" -q -dose "$nomd" -nz "$3" -o "$dir/accuracy/rate" "$dir/accuracy/image.cont" \
 		"$dir/resist.in" || return 1
 	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
@@ -318,28 +390,31 @@ fem_accuracy_rules() {
 # edit), the options each stage depends on, and the Makefile; a file is
 # replaced only when its content changes, so make redoes exactly the work
 # whose inputs changed and nothing else
-mkdir -p "$dir" || die "$dir: cannot make the directory"
-dir=$(cd "$dir" && pwd)
+mkdir -p -- "$dir" || die "$dir: cannot make the directory"
+dir=$(cd -- "$dir" && pwd)
 put() { # put FILE: stdin becomes FILE if different
 	cat >"$dir/.new"
 	if cmp -s "$dir/.new" "$dir/$1"; then rm -f "$dir/.new"; else mv -f "$dir/.new" "$dir/$1"; fi
 }
 put mask.in <"$mask"
 put resist.in <"$resist"
-echo "$margs" | put measure.opts
+# the options as make passes them (mkq): each word as the checks above saw it
+measureq=$(mkwords -measure "$margs")
+printf '%s\n' "$measureq" | put measure.opts
 fem_accuracy_choose
+etchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$etchopts")"
+cetchq=""
+[ -z "$accuracy" ] || cetchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$cetchopts")"
 echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio}" | put accuracy.opts
-echo "-et $etchtime$etchopts${accuracy:+ / $cetchopts}" | put etch.opts
-
-fname() { echo "f$1"; }
-dname() { echo "d$1"; }
-# runs POINT-DIR: the directories of a point's runs (one per seed with -seeds)
-runs() {
-	if [ -z "$seeds" ]; then echo "$1"; else
-		_s=1
-		while [ $_s -le "$seeds" ]; do echo "$1/s$_s"; _s=$((_s + 1)); done
-	fi
-}
+printf '%s\n' "$etchq${accuracy:+ / $cetchq}" | put etch.opts
+# the runs of a point are its directory fF/dD, or with -seeds one
+# directory fF/dD/sK per seed: seedsfx lists the suffixes (no fork per
+# point: a loop "for s in ${seedsfx:-""}" runs once, with s empty, without)
+seedsfx=""
+if [ -n "$seeds" ]; then
+	_s=1
+	while [ $_s -le "$seeds" ]; do seedsfx="$seedsfx /s$_s"; _s=$((_s + 1)); done
+fi
 {
 cat <<'S'
 #!/bin/sh
@@ -362,17 +437,17 @@ S
 
 # the Makefile
 {
-	echo "# The focus-exposure matrix $dir, written by fem(1): $nf foci x $nd doses."
+	printf '# The focus-exposure matrix %s, written by fem(1): %s foci x %s doses.\n' "$dir" "$nf" "$nd"
 	echo "# make -j N all runs the sweep (resumable); make collect writes fem.dat,"
 	echo "# bossung.2D/.ps/.svg and, with TARGET and TOL, window.dat/.ps."
-	echo "SPLAT = $SPLAT"
-	echo "BLEACH = $BLEACH"
-	echo "ETCH = $ETCH"
-	echo "MEASURE = $MEASURE"
-	echo "FEMWIN = $FEMWIN"
-	echo "DRAWPLOT = $DRAWPLOT"
-	echo "ETCHOPTS = -et $etchtime$etchopts"
-	echo "MEASUREARGS = $margs"
+	printf 'SPLAT = %s\n' "$(mkq "$SPLAT")"
+	printf 'BLEACH = %s\n' "$(mkq "$BLEACH")"
+	printf 'ETCH = %s\n' "$(mkq "$ETCH")"
+	printf 'MEASURE = %s\n' "$(mkq "$MEASURE")"
+	printf 'FEMWIN = %s\n' "$(mkq "$FEMWIN")"
+	printf 'DRAWPLOT = %s\n' "$(mkq "$DRAWPLOT")"
+	printf 'ETCHOPTS = %s\n' "$etchq"
+	printf 'MEASUREARGS =%s\n' "$measureq"
 	# -accuracy: the grids of the points and of their coarse solves
 	if [ -n "$accuracy" ]; then
 		# shellcheck disable=SC2086 # two grids of three words on purpose
@@ -381,7 +456,7 @@ S
 		echo "BLEACHNZ = -nz $3"
 		echo "CSPLATGRID = -grid $4 $5"
 		echo "CBLEACHNZ = -nz $6"
-		echo "CETCHOPTS = -et $etchtime$cetchopts"
+		printf 'CETCHOPTS = %s\n' "$cetchq"
 		echo "ACCURACY = -accuracy $accuracy -ratio $ratio"
 	fi
 	echo "TARGET = $target"
@@ -393,34 +468,36 @@ S
 	echo ".PHONY: all images collect"
 	printf 'all:'
 	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
-		for R in $(runs "$(fname "$f")/$(dname "$d")"); do printf ' %s/measure.dat' "$R"; done
+		for s in ${seedsfx:-""}; do R=f$f/d$d$s; printf ' %s/measure.dat' "$R"; done
 	done; done
 	echo
 	printf 'images:'
-	for f in $fvals; do printf ' %s/image.cont' "$(fname "$f")"; done
+	for f in $fvals; do printf ' %s/image.cont' "f$f"; done
 	# -accuracy: the coarse images too, made once per focus before the points
-	[ -z "$accuracy" ] || for f in $fvals; do printf ' %s/image-coarse.cont' "$(fname "$f")"; done
+	[ -z "$accuracy" ] || for f in $fvals; do printf ' %s/image-coarse.cont' "f$f"; done
 	echo
 	# intermediates: not rebuilt when a point's measure.dat is up to date
 	printf '.SECONDARY:'
 	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
-		for R in $(runs "$(fname "$f")/$(dname "$d")"); do printf ' %s/rate %s/curves.plot' "$R" "$R"; done
+		for s in ${seedsfx:-""}; do R=f$f/d$d$s; printf ' %s/rate %s/curves.plot' "$R" "$R"; done
 		[ -z "$accuracy" ] ||
-			printf ' %s/%s/rate-coarse %s/%s/coarse.plot' "$(fname "$f")" "$(dname "$d")" "$(fname "$f")" "$(dname "$d")"
+			printf ' %s/%s/rate-coarse %s/%s/coarse.plot' "f$f" "d$d" "f$f" "d$d"
 	done; done
 	echo
 	for f in $fvals; do
-		F=$(fname "$f")
+		F=f$f
 		echo
 		echo "$F/image.cont: mask.in resist.in accuracy.opts"
 		printf '\t@mkdir -p %s\n' "$F"
-		printf '\t@$(RUN) %s/splat.log "focus %s: splat" $@ $(SPLAT) -q $(SPLATGRID) -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
+		# in the focus's folder: the files the mask writes itself (its
+		# cutlines) are the focus's own, not one file all foci write at once
+		printf '\t@cd %s && sh ../stage.sh splat.log "focus %s: splat" image.cont $(SPLAT) -q $(SPLATGRID) -defocus %s -bf ../resist.in -o image.cont ../mask.in\n' "$F" "$f" "$f"
 		if [ -n "$accuracy" ]; then
 			echo "$F/image-coarse.cont: mask.in resist.in accuracy.opts"
 			printf '\t@mkdir -p %s\n' "$F"
-			printf '\t@$(RUN) %s/splat-coarse.log "focus %s: splat (coarse)" $@ $(SPLAT) -q $(CSPLATGRID) -defocus %s -bf resist.in -o $@ mask.in\n' "$F" "$f" "$f"
+			printf '\t@cd %s && sh ../stage.sh splat-coarse.log "focus %s: splat (coarse)" image-coarse.cont $(SPLAT) -q $(CSPLATGRID) -defocus %s -bf ../resist.in -o image-coarse.cont ../mask.in\n' "$F" "$f" "$f"
 		fi
-		for d in $dvals; do inpts "$f" "$d" || continue; for P in $(runs "$F/$(dname "$d")"); do
+		for d in $dvals; do inpts "$f" "$d" || continue; for s in ${seedsfx:-""}; do P=$F/d$d$s;
 			seed="" what="focus $f dose $d"
 			[ -z "$seeds" ] || { seed=" -seed ${P##*/s}" what="$what seed ${P##*/s}"; }
 			echo "$P/rate: $F/image.cont resist.in accuracy.opts"
@@ -445,7 +522,7 @@ S
 	printf '\t@st=0; $(FEMWIN) -collect -o fem.dat -bossung bossung.2D -template bossung.tpl'
 	[ -z "$seeds" ] || printf ' -stochastic stoch.dat'
 	for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue;
-		for R in $(runs "$(fname "$f")/$(dname "$d")"); do
+		for s in ${seedsfx:-""}; do R=f$f/d$d$s;
 			printf ' \\\n\t  -p %s %s %s/measure.dat' "$f" "$d" "$R"
 		done
 	done; done
@@ -467,22 +544,26 @@ S
 } | put Makefile
 
 if [ -n "$slurm" ]; then
-	# one array task per chunk of points; the images first, as their own array
+	# one array task per chunk of points; the images first, as their own
+	# array.  submit.sh runs sbatch in DIR, the jobs' working directory, so
+	# the #SBATCH lines name no path (sbatch does not parse sh quoting)
 	nruns=$((npts * ${seeds:-1}))
 	ntask=$(( (nruns + chunk - 1) / chunk ))
+	dirq=$(shq "$dir")
+	sbq=""
+	for w in $sbopts; do sbq="$sbq $(shq "$w")"; done
 	{
 		echo "#!/bin/sh"
-		echo "# The points of $dir as a Slurm job array, written by fem(1);"
+		printf '# The points of %s as a Slurm job array, written by fem(1);\n' "$dir"
 		echo "# DIR/submit.sh submits it after the images.  Each task makes its points."
 		echo "#SBATCH --job-name=fem-points"
 		echo "#SBATCH --array=0-$((ntask - 1))"
-		echo "#SBATCH --chdir=$dir"
-		echo "#SBATCH --output=$dir/slurm/points-%a.out"
+		echo "#SBATCH --output=slurm/points-%a.out"
 		echo "set -eu"
-		echo "cd $dir"
+		printf 'cd %s\n' "$dirq"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		k=0 t=0 line=""
-		for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue; for R in $(runs "$(fname "$f")/$(dname "$d")"); do
+		for f in $fvals; do for d in $dvals; do inpts "$f" "$d" || continue; for s in ${seedsfx:-""}; do R=f$f/d$d$s;
 			line="$line $R/measure.dat"
 			k=$((k + 1))
 			if [ $k -eq "$chunk" ]; then
@@ -497,17 +578,16 @@ if [ -n "$slurm" ]; then
 	} | put fem.sbatch
 	{
 		echo "#!/bin/sh"
-		echo "# The per-focus images of $dir as a Slurm job array, written by fem(1)."
+		printf '# The per-focus images of %s as a Slurm job array, written by fem(1).\n' "$dir"
 		echo "#SBATCH --job-name=fem-images"
 		echo "#SBATCH --array=0-$((nf - 1))"
-		echo "#SBATCH --chdir=$dir"
-		echo "#SBATCH --output=$dir/slurm/images-%a.out"
+		echo "#SBATCH --output=slurm/images-%a.out"
 		echo "set -eu"
-		echo "cd $dir"
+		printf 'cd %s\n' "$dirq"
 		echo 'case $SLURM_ARRAY_TASK_ID in'
 		t=0
 		for f in $fvals; do
-			echo "$t) set -- $(fname "$f")/image.cont${accuracy:+ $(fname "$f")/image-coarse.cont} ;;"
+			echo "$t) set -- f$f/image.cont${accuracy:+ f$f/image-coarse.cont} ;;"
 			t=$((t + 1))
 		done
 		echo '*) echo "images.sbatch: no task $SLURM_ARRAY_TASK_ID" >&2; exit 1 ;;'
@@ -516,15 +596,15 @@ if [ -n "$slurm" ]; then
 	} | put images.sbatch
 	{
 		echo "#!/bin/sh"
-		echo "# Submits the sweep $dir to Slurm (written by fem(1)): the images,"
-		echo "# then the points with a dependency on them.  Afterwards: fem -collect -d $dir"
+		printf '# Submits the sweep %s to Slurm (written by fem(1)): the images,\n' "$dir"
+		printf '# then the points with a dependency on them.  Afterwards: fem -collect -d %s\n' "$dir"
 		echo "set -eu"
-		echo "cd $dir"
+		printf 'cd %s\n' "$dirq"
 		echo "mkdir -p slurm"
-		echo "img=\$(sbatch --parsable $sbopts images.sbatch)"
-		echo "pts=\$(sbatch --parsable $sbopts --dependency=afterok:\${img%%;*} fem.sbatch)"
+		printf 'img=$(sbatch --parsable%s images.sbatch)\n' "$sbq"
+		printf 'pts=$(sbatch --parsable%s --dependency=afterok:${img%%%%;*} fem.sbatch)\n' "$sbq"
 		echo "echo \"submitted: images job \${img%%;*}, points job \${pts%%;*} ($npts points in $ntask tasks)\""
-		echo "echo \"when they are done: fem -collect -d $dir\""
+		printf "echo 'when they are done: fem -collect -d '%s\\n" "$dirq"
 	} | put submit.sh
 	chmod +x "$dir/submit.sh"
 	say "$dir: $npts points ($nf foci x $nd doses) as a Slurm array of $ntask tasks; run $dir/submit.sh, then fem -collect -d $dir"

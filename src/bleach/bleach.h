@@ -170,6 +170,14 @@ struct peb_params {
 	double t, dh, dq;               /* peb: s, um2/s, um2/s */
 	int noisy;                      /* 1: h0 may exceed 1 (shot noise), else clamped */
 };
+/* The whole bake for peb_choose_steps' estimate: points of the grid,
+ * seconds a point and step in closed form, the input for the refusal
+ * (points 0: no estimate, the default). */
+void peb_set_budget(double points, double t_point, const char *where);
+/* Seconds of one point's reaction over tau beyond t_point: the Gauss-
+ * Legendre subintervals of order p != 1 (at most about 400 with the tail
+ * in closed form), for the largest of h0max's fractions. */
+double peb_react_seconds(const struct peb_params *pp, double h0max, double tau);
 void peb_params_from(struct peb_params *pp, const struct bleach_input *in);
 /* The exact reaction of one point over tau seconds: h and q replaced by
  * their values at the end (negative inputs count as 0), the integral of

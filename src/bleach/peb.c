@@ -41,12 +41,14 @@
  * error of the finer run is then about a third of that.
  */
 #include "bleach.h"
+#include "budget.h"
 #include "fft.h"
 #include "par.h"
 #include "util.h"
 
 #include <complex.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -83,6 +85,26 @@ static double acid_at(double h0, double a, double kq, double s)
 
 /* Gauss-Legendre, 3 points on [-1, 1]. */
 static const double GL_X = 0.7745966692414834, GL_W0 = 8.0 / 9.0, GL_W1 = 5.0 / 9.0;
+
+/* Past PEB_TAIL time constants 1/|a| of the exponential approach, h is
+ * its asymptote but for e^-40 (relative): the integral of h^p from lo to
+ * tau is then closed: d^p (tau - lo) for a > 0 (h -> d), and for a < 0
+ * (more quencher than acid) h = C e^{a t}, C = h0 / (1 - kq h0 / a), whose
+ * p-th power integrates to C^p (e^{p a tau} - e^{p a lo}) / (p a).  The
+ * subintervals of at most 1/(2|a|) therefore stop after about 80 of
+ * them: a bake of 1e4 s with a 1e6 /s quenching had taken 1e10 a step. */
+#define PEB_TAIL 40.0
+#define PEB_WMAX 0.5
+static double tail(const struct peb_params *pp, double h0, double a, double kq, double lo,
+		   double tau)
+{
+	double p = pp->p;
+	if (a > 0)
+		return pow(a / kq, p) * (tau - lo);
+	double c = h0 / (1 - kq * h0 / a);
+	/* e^{p a lo} (e^{p a (tau - lo)} - 1) / (p a), without cancellation */
+	return pow(c, p) * exp(p * a * lo) * expm1(p * a * (tau - lo)) / (p * a);
+}
 
 /* The acid-quencher reaction alone over tau (kloss = 0): h - q = d held,
  * dh/dt = kq d h - kq h^2; returns the integral of h^p. */
@@ -125,11 +147,16 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 	 * follows the algebraic decay h0 / (1 + kq h0 t) when d = 0) */
 	double rate = fabs(a) + kq * h0;
 	double s0 = rate > 0 ? 0.25 / rate : tau;
-	/* and never wider than an eighth of the time scale 1/|a| of the
-	 * exponential approach that follows the transient */
-	double wmax = fabs(a) > 0 ? 0.125 / fabs(a) : tau;
+	/* and never wider than half the time scale 1/|a| of the exponential
+	 * approach that follows the transient (3-point Gauss-Legendre on
+	 * e^{-|a| t} over |a| w = 1/2: within 1e-8 relative) */
+	double wmax = fabs(a) > 0 ? PEB_WMAX / fabs(a) : tau;
 	double sum = 0, lo = 0, w = s0;
 	for (;;) {
+		if (fabs(a) * lo > PEB_TAIL && lo < tau) {
+			sum += tail(pp, h0, a, kq, lo, tau);
+			break;
+		}
 		if (w > wmax)
 			w = wmax;
 		double hi = lo + w;
@@ -146,6 +173,36 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 		w = s0 + 0.25 * hi;
 	}
 	return sum;
+}
+
+/* seconds a Gauss-Legendre subinterval of quench (three pow, three
+ * acid_at), measured on the development machine, 2020 x86-64 */
+static const double T_SUB = 1.5e-7;
+
+double peb_react_seconds(const struct peb_params *pp, double h0max, double tau)
+{
+	if (pp->p == 1 || !(pp->kq > 0))
+		return 0;
+	double worst = 0;
+	/* quench's subintervals, counted as it makes them, for h0 from
+	 * h0max / 8 to h0max */
+	for (int k = 1; k <= 8; k++) {
+		double h0 = h0max * k / 8, d = h0 - pp->q0, a = pp->kq * d;
+		double rate = fabs(a) + pp->kq * h0;
+		double s0 = rate > 0 ? 0.25 / rate : tau;
+		double wmax = fabs(a) > 0 ? PEB_WMAX / fabs(a) : tau;
+		double lo = 0, w = s0, n = 0;
+		while (lo < tau && n < 1e7) {
+			if (fabs(a) * lo > PEB_TAIL)
+				break;
+			n++;
+			lo += w < wmax ? w : wmax;
+			w = s0 + 0.25 * lo;
+		}
+		if (n > worst)
+			worst = n;
+	}
+	return worst * T_SUB;
 }
 
 /* peb_react with e = exp(-kloss tau / 2) given (one exp a step, not a
@@ -560,6 +617,32 @@ void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, do
 /* Sample columns for the step choice. */
 #define PEB_SAMPLES 9
 
+/* budget_check of the whole bake in n steps, once it is beyond the
+ * limits (with -big it only reports, once). */
+static double budget_points, budget_t_point;
+static const char *budget_where;
+
+void peb_set_budget(double points, double t_point, const char *where)
+{
+	budget_points = points;
+	budget_t_point = t_point;
+	budget_where = where;
+}
+
+static void peb_budget(const struct peb_params *pp, double h0max, int n, int *checked)
+{
+	if (!(budget_points > 0) || *checked)
+		return;
+	double per = budget_t_point + peb_react_seconds(pp, h0max, pp->t / n);
+	double secs = budget_points * n * per, bytes = budget_points * 3 * sizeof(double);
+	if (secs <= BUDGET_SECONDS && bytes <= budget_memory())
+		return;
+	char what[80];
+	snprintf(what, sizeof what, "%.3g bake points x %d steps or more", budget_points, n);
+	budget_check(budget_where, what, secs, bytes);
+	*checked = 1;
+}
+
 int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol, int nz,
 		     double dz, double *change)
 {
@@ -612,10 +695,18 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 		for (size_t s = 0; s < ns; s++)
 			col[(size_t)k * ns + s] = h0[(size_t)k * ncol + pick[s]];
 	int n = PEB_MIN_STEPS;
+	double h0max = 0;
+	for (size_t k = 0; k < nn; k++)
+		h0max = fmax(h0max, col[k]);
+	/* the bake at the count about to be tried must fit the budget, so
+	 * that the search itself (a small part of it) never runs away */
+	int checked = 0;
+	peb_budget(pp, h0max, n, &checked);
 	memcpy(a, col, nn * sizeof *a);
 	peb_columns(pp, a, ns, nz, dz, n);
 	double diff = 0;
 	for (;;) {
+		peb_budget(pp, h0max, 2 * n, &checked);
 		memcpy(b, col, nn * sizeof *b);
 		peb_columns(pp, b, ns, nz, dz, 2 * n);
 		diff = 0;

@@ -196,6 +196,7 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 		M[k] = 1 - M[k];
 	struct peb_params pp;
 	peb_params_from(&pp, in);
+	peb_set_budget((double)np, T_PEB, input);
 	double change;
 	int n = peb_choose_steps(&pp, M, ncol, nz, dz, &change);
 	if (!(change < PEB_TOL))
@@ -204,7 +205,7 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
 	/* h, q, the m integral, and the noisy quencher of a stochastic run */
-	budget_check(input, what, (double)np * n * T_PEB,
+	budget_check(input, what, (double)np * n * (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
 		     (double)np * (3 + in->stochastic) * sizeof(double));
 	double change_xy;
 	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);

@@ -44,7 +44,9 @@ void e2_init(struct e2 *e, struct rfield *f, const struct e2opts *o)
 	e->tp = ptimes_make(o->et, o->pt, &e->ntp);
 	e->pf = fmt_plot_new(2);
 	e->pf->labels = *fmt_labels_std(LABELS_PROFILE2D);
-	if (o->start)
+	/* a start profile given (by -start, or by a caller's points): one of
+	 * no points (start NULL) is an error there, not a flat top */
+	if (o->start || o->startfile)
 		e2_start_init(e);
 }
 

@@ -315,13 +315,16 @@ static double ask_step(double zmin, double zmax)
 static int make_levels(double zmin, double zmax, double step, double **out)
 {
 	double a = ceil(zmin / step), b = floor(zmax / step);
-	if (b - a + 1 > MAX_LEVELS)
-		die("contour step %g gives %.0f levels between %g and %g (at most %d)",
+	/* %.3g: a step of 1e-300 gives a count of 300 digits (or none) */
+	if (!(b - a + 1 <= MAX_LEVELS))
+		die("contour step %g gives %.3g levels between %g and %g (at most %d)",
 		    step, b - a + 1, zmin, zmax, MAX_LEVELS);
 	double *lv = xreallocarray(NULL, (size_t)(b - a + 2 > 1 ? b - a + 2 : 1), sizeof *lv);
-	int n = 0;
-	for (double k = a; k <= b; k++) {
-		double v = k * step;
+	int n = 0, count = b >= a ? (int)(b - a + 1) : 0;
+	/* counted in integers: past 2^53, k + 1 == k and a loop on k never
+	 * ends (a step of 1e-300 on a flat image) */
+	for (int i = 0; i < count; i++) {
+		double v = (a + i) * step;
 		/* a level at the extreme z only touches points */
 		if (v > zmin && v < zmax)
 			lv[n++] = v;

@@ -21,10 +21,19 @@
  * orders need the column pass: about area x log(area) a cell, with the
  * cell count fixed by the source shape alone.  splat -method auto runs
  * the method with the smaller estimate.
+ *
+ * A mask of polygons or gds shapes (mask.c) costs, on top, every slanted
+ * boundary piece times every order of the rectangle, every vertical piece
+ * times every row of orders and every distinct x of the vertical pieces
+ * times every order, about one piece per edge: an array of a million
+ * squares from a 258-byte GDSII file is hundreds of MB and seconds of
+ * work, which the counts of orders alone do not see.
  */
 #include "splat.h"
+#include "util.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* seconds per pair tried and rejected; per quadrature point of an
  * integrated pair; per complex product of the image sums; per number
@@ -38,6 +47,65 @@ static const double T_ROW = 1.3e-8;
  * column and a row pass of FFTs (seconds per point and log2 of the
  * length) and the accumulation; per order of a cell; measured as above. */
 static const double T_FFT = 6e-10, T_ORDER = 3e-9, T_ACC = 1e-9;
+
+/* the polygon mask (mask.c polygon_orders): seconds per slanted edge and
+ * order of the rectangle, per vertical edge and row of orders, per
+ * distinct x of the vertical edges and order, per vertex in the sweep;
+ * bytes per vertex (the layers, their painted copy, the sweep's pieces);
+ * measured as above with arrays of squares and of 999-gons */
+static const double T_POLY = 1.2e-8, T_COL = 1e-8, T_GROUP = 3e-9, T_SWEEP = 1e-8;
+static const double B_POLY = 90;
+
+static int cmp_x(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* The seconds of the polygon mask for nrect orders in nrows rows, and its
+ * vertex count (0 for rects alone, which take the cell path). */
+static double mask_poly_cost(const struct splat_mask *m, double nrect, double nrows,
+			     double *verts)
+{
+	double v = 0, slant = 0, vert = 0;
+	for (int k = 0; k < m->nlayers; k++) {
+		const struct poly_set *ps = &m->layers[k].shapes;
+		v += ps->n ? ps->start[ps->n] : 0;
+	}
+	*verts = v > 0 ? v + 4.0 * m->nrects : 0;
+	if (v == 0)
+		return 0;
+	double *xs = xreallocarray(NULL, (size_t)v + 1, sizeof *xs);
+	size_t nx = 0;
+	for (int k = 0; k < m->nlayers; k++) {
+		const struct poly_set *ps = &m->layers[k].shapes;
+		for (int i = 0; i < ps->n; i++) {
+			const double *xy = poly_set_xy(ps, i);
+			int nv = poly_set_nv(ps, i);
+			for (int j = 0; j < nv; j++) {
+				int j1 = (j + 1) % nv;
+				if (xy[2 * j + 1] == xy[2 * j1 + 1])
+					continue;               /* horizontal: no piece */
+				if (xy[2 * j] == xy[2 * j1]) {
+					vert++;
+					xs[nx++] = xy[2 * j];
+				} else {
+					slant++;
+				}
+			}
+		}
+	}
+	qsort(xs, nx, sizeof *xs, cmp_x);
+	double groups = 0;
+	for (size_t i = 0; i < nx; i++)
+		groups += i == 0 || xs[i] != xs[i - 1];
+	free(xs);
+	/* the rects' vertical edges, 2 each, at their own x */
+	vert += 2.0 * m->nrects;
+	groups += 2.0 * m->nrects;
+	return slant * nrect * T_POLY + vert * nrows * T_COL + groups * nrect * T_GROUP
+	       + *verts * log2(*verts + 1) * T_SWEEP;
+}
 
 static double nice(double n)
 {
@@ -89,14 +157,15 @@ void splat_estimate_abbe(const struct splat_input *in, double *nodes, double *se
 	/* the grid by one FFT per plane (image_grid_fft), cutlines summed */
 	double grid = (double)in->nx * in->ny;
 	*nodes = ns;
-	*seconds = ns * np * per + np * kx * ky * log2(kx * ky) * T_FFT
+	double mv, mt = mask_poly_cost(m, nrect, 2 * N + 1, &mv);
+	*seconds = mt + ns * np * per + np * kx * ky * log2(kx * ky) * T_FFT
 		 + np * grid * log2(grid + 1) * T_FFT + w * hh * np * cut * T_IMAGE
 		 + cells * (2 * N + 1) * T_IMAGE + cx * nrect * T_IMAGE
 		 + (pts + cut) * np * T_OUT;
 	pts += cut;
 	/* the field's grid, the planes' sums, a work row per thread, the
 	 * spectra, the coefficients, the image and its phasors */
-	*bytes = kx * ky * (16 + 8 * np) + 64 * (kx + ky) * 16 + w * hh * 16 * np
+	*bytes = mv * B_POLY + kx * ky * (16 + 8 * np) + 64 * (kx + ky) * 16 + w * hh * 16 * np
 		 + nrect * (16 + 56) + cells * 16 + cy * (2 * N + 1) * 16
 		 + pts * 8 * np + grid * 16;
 }
@@ -132,13 +201,14 @@ void splat_estimate(const struct splat_input *in, double *orders, double *pairs,
 		pts += in->cutlines[k].npts;
 	*orders = n;
 	*pairs = tried;
-	*seconds = tried * T_PAIR + integrated * per * T_QUAD
+	double mv, mt = mask_poly_cost(m, nrect, 2 * N + 1, &mv);
+	*seconds = mt + tried * T_PAIR + integrated * per * T_QUAD
 		 + (w * h * in->ny + w * pts) * T_IMAGE
 		 + cells * (2 * N + 1) * T_IMAGE + cx * nrect * T_IMAGE
 		 + pts * T_OUT;
 	/* coefficients of the rectangle of orders and the kept lists (56 bytes
 	 * an order), the spectrum, the cells, the image and its phasors */
-	*bytes = nrect * (16 + 56) + w * h * 16 + cells * 16
+	*bytes = mv * B_POLY + nrect * (16 + 56) + w * h * 16 + cells * 16
 		 + cy * (2 * N + 1) * 16
 		 + pts * 8 + w * in->nx * 16;
 }

@@ -25,6 +25,7 @@
  */
 #include "splat.h"
 #include "checked.h"
+#include "par.h"
 #include "util.h"
 
 #include <limits.h>
@@ -197,6 +198,166 @@ static void keep_in_circle(struct orders *o, const double complex *cc, double fm
 		}
 }
 
+/* The sums of polygon_orders for the rows [lo, hi) of orders (row q +
+ * nmax): a row adds every piece in piece order, so a coefficient is the
+ * same sum whichever thread holds its row.  Along a row the phase
+ * e^{-2 pi i (fx xm + fy ym)} and e^{i arg} of the sinc advance by one
+ * complex product an order, and are taken afresh every SEED orders (the
+ * products drift by an ulp or two each: 1e-14 at most); where the sinc's
+ * argument is small its sine is taken directly (there the product's
+ * absolute error would be a large relative one).  Two sines a piece and
+ * order had made an array of a million squares a minute and a half. */
+enum { SEED = 32 };
+
+/* sin(x)/x for |x| < 0.5 by its series to x^16 (the next term is below
+ * 1e-22): vertical edges (b = 0) of short pieces have small arguments all
+ * along a row, where a sine call each would cost more than the rest. */
+static double sinc_small(double x)
+{
+	double z = x * x, s = 0;
+	/* 1/(2k+1)! for k = 8 .. 1: 1 - z (1/3! - z (1/5! - z (...))) */
+	static const double c[] = {1.0 / 355687428096000.0, 1.0 / 1307674368000.0,
+				   1.0 / 6227020800.0, 1.0 / 39916800.0, 1.0 / 362880.0,
+				   1.0 / 5040.0, 1.0 / 120.0, 1.0 / 6.0};
+	for (int k = 0; k < 8; k++)
+		s = c[k] - z * s;
+	return 1 - z * s;
+}
+struct poly_rows {
+	const struct orders *o;
+	const struct poly_piece *pc;
+	const double complex *dt;       /* (tau_L - tau_R) / (Lx Ly) a piece */
+	size_t np;
+	double complex *cc;
+	const size_t *vert;             /* the vertical pieces, by x then index */
+	size_t nvert;
+	double complex *scratch;        /* 2 nm + 2 rows a worker */
+};
+
+/* The vertical pieces (b = 0, the edges of Manhattan layouts) of the rows
+ * [lo, hi).  Their term is separable: e^{-2 pi i fx xm} / fx depends on
+ * the column alone and e^{-2 pi i fy ym} h sinc(pi h fy) on the row alone,
+ * so the pieces at one x add their row factors first (U) and the row
+ * times the column factors is added once for them all: an array of a
+ * million squares has a few thousand distinct x.  The row factors advance
+ * by a complex product a row, taken afresh every SEED rows. */
+static void poly_columns(const struct poly_rows *r, size_t lo, size_t hi, int worker)
+{
+	const struct orders *o = r->o;
+	int nm = 2 * o->mmax + 1, mmax = o->mmax;
+	size_t nr = hi - lo;
+	double complex *u = r->scratch + (size_t)worker * (size_t)(2 * nm + 2 + 2 * o->nmax + 1);
+	double complex *v = u + 2 * o->nmax + 1;
+	for (size_t g = 0; g < r->nvert;) {
+		double xm = r->pc[r->vert[g]].x0;
+		for (size_t k = 0; k < nr; k++)
+			u[k] = 0;
+		for (; g < r->nvert && r->pc[r->vert[g]].x0 == xm; g++) {
+			const struct poly_piece *p = &r->pc[r->vert[g]];
+			double complex dt = r->dt[r->vert[g]];
+			double h = p->y1 - p->y0, ym = 0.5 * (p->y0 + p->y1);
+			double wy = -2 * M_PI * ym / o->ly, ay = M_PI * h / o->ly;
+			double sxr = cos(wy), sxi = sin(wy), sar = cos(ay), sai = sin(ay);
+			double er = 0, ei = 0, sr = 0, si = 0;
+			for (size_t k = 0; k < nr; k++) {
+				int q = (int)(lo + k) - o->nmax;
+				if (k % SEED == 0) {
+					er = cos(wy * q); ei = sin(wy * q);
+					sr = cos(ay * q); si = sin(ay * q);
+				}
+				double arg = ay * q;
+				double sinc = fabs(arg) < 0.5 ? sinc_small(arg) : si / arg;
+				u[k] += dt * (er + I * ei) * (h * sinc);
+				double t = er * sxr - ei * sxi;
+				ei = er * sxi + ei * sxr;
+				er = t;
+				t = sr * sar - si * sai;
+				si = sr * sai + si * sar;
+				sr = t;
+			}
+		}
+		/* the column factors: i e^{-2 pi i fx xm} / (2 pi fx), and xm at fx = 0
+		 * (the integral of x(y) = xm along the piece) */
+		for (int mm = -mmax; mm <= mmax; mm++) {
+			double ph = -2 * M_PI * (mm / o->lx) * xm;
+			v[mm + mmax] = mm == 0 ? xm :
+				(cos(ph) + I * sin(ph)) * (I / (2 * M_PI * (mm / o->lx)));
+		}
+		for (size_t k = 0; k < nr; k++) {
+			double complex *c = r->cc + (lo + k) * (size_t)nm;
+			double complex uk = u[k];
+			if (uk == 0)
+				continue;
+			for (int j = 0; j < nm; j++)
+				c[j] += uk * v[j];
+		}
+	}
+}
+
+static void poly_rows(void *ctx, size_t lo, size_t hi, int worker)
+{
+	const struct poly_rows *r = ctx;
+	const struct orders *o = r->o;
+	int nm = 2 * o->mmax + 1, mmax = o->mmax;
+	poly_columns(r, lo, hi, worker);
+	for (size_t i = 0; i < r->np; i++) {
+		double dr = creal(r->dt[i]), di = cimag(r->dt[i]);
+		const struct poly_piece *p = &r->pc[i];
+		if ((dr == 0 && di == 0) || p->x0 == p->x1)
+			continue;       /* vertical pieces: poly_columns */
+		double h = p->y1 - p->y0, b = (p->x1 - p->x0) / h;
+		double xm = 0.5 * (p->x0 + p->x1), ym = 0.5 * (p->y0 + p->y1);
+		/* the phase and the sinc's argument per order along x */
+		double wx = -2 * M_PI * xm / o->lx, ax = M_PI * h * b / o->lx;
+		double sxr = cos(wx), sxi = sin(wx), sar = cos(ax), sai = sin(ax);
+		for (size_t row = lo; row < hi; row++) {
+			double fy = ((int)row - o->nmax) / o->ly;
+			double py = -2 * M_PI * fy * ym, ay = M_PI * h * fy;
+			double complex *c = r->cc + row * (size_t)nm + mmax;
+			double er = 0, ei = 0, sr = 0, si = 0;
+			for (int mm = -mmax; mm <= mmax; mm++) {
+				if ((mm + mmax) % SEED == 0) {
+					er = cos(wx * mm + py); ei = sin(wx * mm + py);
+					sr = cos(ax * mm + ay); si = sin(ax * mm + ay);
+				}
+				if (mm != 0) {
+					double arg = ax * mm + ay;
+					double sinc = fabs(arg) < 0.5 ? sinc_small(arg) : si / arg;
+					/* dt e h sinc / (-2 pi i fx) = dt (i e) k */
+					double k = h * sinc / (2 * M_PI * (mm / o->lx));
+					double tr = -ei * k, ti = er * k;
+					c[mm] += (dr * tr - di * ti) + I * (dr * ti + di * tr);
+				} else {
+					double w = 2 * M_PI * fy, a0 = 0.5 * w * h;
+					double sinc = a0 == 0 ? 1 : sin(a0) / a0;
+					double complex e = cos(py) + I * sin(py);
+					/* integral of (xm + b u) e^{-i w u}, u in [-h/2, h/2] */
+					double complex v = xm * h * sinc - I * (2 * b * moment_sin(w, 0.5 * h));
+					c[mm] += (dr + I * di) * e * v;
+				}
+				double t = er * sxr - ei * sxi;
+				ei = er * sxi + ei * sxr;
+				er = t;
+				t = sr * sar - si * sai;
+				si = sr * sai + si * sar;
+				sr = t;
+			}
+		}
+	}
+}
+
+/* qsort's order of the vertical pieces: by x, then by index (the sweep's
+ * order), so the groups and their sums do not depend on qsort. */
+static const struct poly_piece *vert_pc;
+static int cmp_vert(const void *a, const void *b)
+{
+	size_t i = *(const size_t *)a, j = *(const size_t *)b;
+	double x = vert_pc[i].x0, y = vert_pc[j].x0;
+	if (x != y)
+		return x < y ? -1 : 1;
+	return (i > j) - (i < j);
+}
+
 /* cc[(n + nmax) * nm + m + mmax] += the transform of the painted layers,
  * minus the background under them, divided by Lx Ly. */
 static void polygon_orders(const struct splat_mask *m, const struct orders *o,
@@ -207,39 +368,28 @@ static void polygon_orders(const struct splat_mask *m, const struct orders *o,
 	int nl = paint_layers(m, &ls, &tau);
 	struct poly_piece *pc;
 	size_t np = poly_boundary(ls, nl, &pc);
-	int nm = 2 * o->mmax + 1;
 	double area = o->lx * o->ly;
+	double complex *dt = xreallocarray(NULL, np ? np : 1, sizeof *dt);
 	for (size_t i = 0; i < np; i++) {
-		const struct poly_piece *p = &pc[i];
-		double complex tl = p->left < 0 ? 0 : tau[p->left] - bg;
-		double complex tr = p->right < 0 ? 0 : tau[p->right] - bg;
-		double complex dt = (tl - tr) / area;
-		if (dt == 0)
-			continue;
-		double h = p->y1 - p->y0, b = (p->x1 - p->x0) / h;
-		double xm = 0.5 * (p->x0 + p->x1), ym = 0.5 * (p->y0 + p->y1);
-		for (int q = -o->nmax; q <= o->nmax; q++) {
-			double fy = q / o->ly;
-			double complex *row = cc + (size_t)(q + o->nmax) * nm + o->mmax;
-			for (int mm = -o->mmax; mm <= o->mmax; mm++) {
-				double fx = mm / o->lx;
-				double ph = -2 * M_PI * (fx * xm + fy * ym);
-				double complex e = cos(ph) + I * sin(ph);
-				if (mm != 0) {
-					double arg = M_PI * (fx * b + fy) * h;
-					double sinc = arg == 0 ? 1 : sin(arg) / arg;
-					/* e h sinc / (-2 pi i fx) = i e h sinc / (2 pi fx) */
-					row[mm] += dt * e * (I * (h * sinc / (2 * M_PI * fx)));
-				} else {
-					double w = 2 * M_PI * fy, arg = 0.5 * w * h;
-					double sinc = arg == 0 ? 1 : sin(arg) / arg;
-					/* integral of (xm + b u) e^{-i w u}, u in [-h/2, h/2] */
-					double complex v = xm * h * sinc - I * (2 * b * moment_sin(w, 0.5 * h));
-					row[mm] += dt * e * v;
-				}
-			}
-		}
+		double complex tl = pc[i].left < 0 ? 0 : tau[pc[i].left] - bg;
+		double complex tr = pc[i].right < 0 ? 0 : tau[pc[i].right] - bg;
+		dt[i] = (tl - tr) / area;
 	}
+	/* the vertical pieces by x, then by their order in the sweep */
+	size_t nv = 0;
+	size_t *vert = xreallocarray(NULL, np ? np : 1, sizeof *vert);
+	for (size_t i = 0; i < np; i++)
+		if (pc[i].x0 == pc[i].x1 && dt[i] != 0)
+			vert[nv++] = i;
+	vert_pc = pc;
+	qsort(vert, nv, sizeof *vert, cmp_vert);
+	size_t per = 2 * (size_t)o->mmax + 1 + 2 + 2 * (size_t)o->nmax + 1 + 2 * (size_t)o->mmax + 1;
+	double complex *scratch = xreallocarray(NULL, (size_t)par_threads(), per * sizeof *scratch);
+	struct poly_rows r = {o, pc, dt, np, cc, vert, nv, scratch};
+	par_for(2 * (size_t)o->nmax + 1, 1, poly_rows, &r);
+	free(scratch);
+	free(vert);
+	free(dt);
 	free(pc);
 	for (int k = 0; k < nl; k++)
 		poly_set_free(&ls[k]);

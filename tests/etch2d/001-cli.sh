@@ -44,8 +44,10 @@ printf -- '-1 1 -1 0\n1\n4\n-1 0\n-0.2 0\n0 -0.3\n1 0\n' >groove.plot
 printf -- '-1 1 -1 0\n1\n3\n-1 0\n0 -0.3\n0.5 0\n' >short.plot
 printf -- '-1 1 -1 0\n1\n5\n-1 0\n0.5 -0.5\n0.5 -0.2\n-0.5 -0.5\n1 0\n' >cross.plot
 printf -- '-1 1 -1 0\n2\n2\n-1 0\n1 0\n2\n-1 -0.5\n1 -0.5\n' >two.plot
+# a curve of no points: refused, not taken for the flat top
+printf -- '-1 1 -1 0\n1\n0\n' >empty.plot
 usage_error etch2d -et 1 -start groove.plot -seed 0 0 r2.bin
-for f in short cross two; do
+for f in short cross two empty; do
 	expect_error etch2d -et 1 -start $f.plot -o out.plot r2.bin
 	grep -q "^etch2d: $f.plot:1: " err.txt || fail "-start $f.plot: $(cat err.txt)"
 done

@@ -24,7 +24,7 @@ expect_file_error femwin resampled.in -resolution mask.in resampled.in
 
 fem -q -if mask.in -bf resist.in -et 60 -dose 80,100,120 -focus -0.3,0,0.3 -measure "$M" \
 	-d plain -j 2 || fail "fem without an engine option: some point failed"
-grep -q -- '-method fmm' plain/etch.opts || fail "the default engine is not fast marching: $(cat plain/etch.opts)"
+grep -q -- "'-method' 'fmm'" plain/etch.opts || fail "the default engine is not fast marching: $(cat plain/etch.opts)"
 awk '!/^#/ { n++; if (!($3 > 0) || $5 != 1) { print "point " $1 " " $2 ": " $0; bad = 1 } }
 	END { exit bad || n != 9 }' plain/fem.dat || fail "not nine open points: $(cat plain/fem.dat)"
 

@@ -9,7 +9,7 @@ st=$?
 [ $st -ne 77 ] || skip "$(tail -n 1 out.txt)"
 [ $st -eq 0 ] || fail "fuzz targets: $(cat out.txt)"
 n=$(grep -c '^fuzz: .*: [0-9][0-9]* executions, exit 0$' out.txt)
-[ "$n" -eq 11 ] || fail "expected 11 readers (gds included) run clean: $(cat out.txt)"
+[ "$n" -eq 13 ] || fail "expected 11 readers (gds included) and the command lines of measure and fem run clean: $(cat out.txt)"
 # In process, a reader's die() returns to the harness: a stream the rate
 # reader had open once leaked a descriptor per bad file, until fopen
 # failed (the campaign of stop 10 aborted after 310 000 runs).  With 32

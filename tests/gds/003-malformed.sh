@@ -56,7 +56,11 @@ done
 cp "$TOP/tests/gds/data/cycle.gds" .
 check cycle.gds "reference loop"
 "$M" chain 1200 deep.gds;        check deep.gds "nested more than 1000 deep"
-"$M" array 32767 32767 wide.gds; check wide.gds "32767 x 32767 copies"
+"$M" array 32767 32767 wide.gds; check wide.gds 'cell "TOP" layer 1 gives 1.07e+09 shapes .* use -big'
+# with -big the walk is still bounded, before it starts
+printf 'window -2 2 -2 2\ngds wide.gds layer 1\n' >wide.in
+expect_error splat -big -q -o wide.cont wide.in
+grep -q "visits 2.15e+09 elements, more than 50000000" err.txt || fail "wide.gds -big: $(cat err.txt)"
 "$M" array 0 1 zero.gds;         check zero.gds "COLROW 0 1"
 "$M" chain 2 c2.gds
 cp c2.gds miss.gds; printf '9' | dd of=miss.gds bs=1 seek=105 conv=notrunc 2>/dev/null

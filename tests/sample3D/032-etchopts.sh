@@ -32,7 +32,7 @@ E=$TOP/examples/contact
 fem -q -n -d sweep -if "$E/mask.in" -bf "$E/resist.in" -et 10 -dose 80 -focus 0 \
 	-measure "-rel 10 -hole 0 0" -deloop 3 -method fmm -refine 2 -no2d -etch "-tol 0.01" ||
 	fail "fem -n with etch options failed"
-grep -qx 'ETCHOPTS = -et 10 -deloop 3 -method fmm -refine 2 -no2d -tol 0.01' sweep/Makefile ||
+grep -qx "ETCHOPTS = '-et' '10' '-deloop' '3' '-method' 'fmm' '-refine' '2' '-no2d' '-tol' '0.01'" sweep/Makefile ||
 	fail "fem's ETCHOPTS: $(grep ETCHOPTS sweep/Makefile)"
 mkdir alone
 cp "$BUILD/bin/sample3D" "$BUILD/bin/fem" alone/

@@ -5,7 +5,7 @@
  * of cells and elements that point back into the buffer (the XY data is
  * decoded only when a shape is flattened), so a layout of a million
  * shapes costs one pass and a few tens of bytes per element.  Flattening
- * walks the reference tree from the chosen cell with the composed
+ * (fmt_gds_flat.c) walks the reference tree from the chosen cell with the composed
  * transform; a cell's bounding box (all layers, computed once) lets a
  * reference that misses the window be skipped whole.
  *
@@ -15,7 +15,7 @@
  * typed in micrometres (micrometres = dbu / 1000 is correctly rounded,
  * as strtod is).
  */
-#include "fmt_gds.h"
+#include "fmt_gds_int.h"
 #include "lex.h"
 #include "util.h"
 
@@ -28,70 +28,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* record types */
-enum {
-	R_HEADER = 0x00, R_BGNLIB = 0x01, R_LIBNAME = 0x02, R_UNITS = 0x03, R_ENDLIB = 0x04,
-	R_BGNSTR = 0x05, R_STRNAME = 0x06, R_ENDSTR = 0x07, R_BOUNDARY = 0x08, R_PATH = 0x09,
-	R_SREF = 0x0A, R_AREF = 0x0B, R_TEXT = 0x0C, R_LAYER = 0x0D, R_DATATYPE = 0x0E,
-	R_WIDTH = 0x0F, R_XY = 0x10, R_ENDEL = 0x11, R_SNAME = 0x12, R_COLROW = 0x13,
-	R_NODE = 0x15, R_TEXTTYPE = 0x16, R_STRING = 0x19, R_STRANS = 0x1A, R_MAG = 0x1B,
-	R_ANGLE = 0x1C, R_PATHTYPE = 0x21, R_BOX = 0x2D, R_BOXTYPE = 0x2E,
-	R_BGNEXTN = 0x30, R_ENDEXTN = 0x31
-};
-/* data types */
-enum { D_NONE = 0, D_BITS = 1, D_INT2 = 2, D_INT4 = 3, D_REAL4 = 4, D_REAL8 = 5, D_STR = 6 };
-
-/* Largest element counts accepted: far beyond real layouts. */
-enum { GDS_MAX_CELLS = 10000000, GDS_MAX_ARRAY = 32767 };
-/* Deepest reference nesting (real layouts nest a few tens deep). */
-enum { GDS_MAX_DEPTH = 1000 };
-
-struct elem {
-	unsigned char kind;     /* R_BOUNDARY, R_BOX, R_PATH, R_SREF, R_AREF, R_TEXT, R_NODE */
-	unsigned char pathtype;
-	unsigned char reflect, absmag, absang;
-	int layer, datatype;
-	int32_t width, bgnextn, endextn;
-	int nxy;
-	size_t xy;              /* offset of the XY data in the buffer */
-	size_t off;             /* offset of the element's first record */
-	int ref;                /* referenced cell (SREF, AREF) */
-	size_t sname, snamelen; /* the name in the buffer, until resolved */
-	double mag, angle;
-	int cols, rows;
-};
-
-struct cell {
-	char *name;
-	size_t off;             /* BGNSTR */
-	size_t first, n;        /* elements */
-	int state;              /* 0 unseen, 1 on the path, 2 done */
-	int referenced;
-	int64_t bb[4];          /* bounding box in its own frame, dbu (xmin xmax ymin ymax) */
-	int empty;
-};
-
-struct gds_lib {
-	char *path, *ctx;
-	jmp_buf *jmp;           /* where errors go in the _try functions, else die */
-	char err[640];
-	long max_visit;
-	double *tmp;            /* flattening scratch, kept here to be freed on error */
-	size_t tcap;
-	struct poly_set path_out;
-	unsigned char *buf;
-	size_t len;
-	double um;              /* micrometres per dbu */
-	long div;               /* um = dbu / div exactly rounded, 0 if not a whole ratio */
-	struct elem *e;
-	size_t ne;
-	struct cell *c;
-	int nc;
-};
-
-static _Noreturn void gds_die(const struct gds_lib *g, size_t off, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-static _Noreturn void gds_die(const struct gds_lib *cg, size_t off, const char *fmt, ...)
+_Noreturn void gds_die(const struct gds_lib *cg, size_t off, const char *fmt, ...)
 {
 	struct gds_lib *g = (struct gds_lib *)cg;
 	char msg[512];
@@ -108,12 +45,7 @@ static _Noreturn void gds_die(const struct gds_lib *cg, size_t off, const char *
 	die("%s", g->err);
 }
 
-static unsigned be16(const unsigned char *p) { return (unsigned)p[0] << 8 | p[1]; }
-static int16_t si16(const unsigned char *p) { return (int16_t)be16(p); }
-static int32_t si32(const unsigned char *p)
-{
-	return (int32_t)((uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]);
-}
+
 
 /* 8-byte excess-64 base-16 real: sign, 7-bit exponent, 56-bit mantissa. */
 static double real8(const unsigned char *p)
@@ -133,6 +65,66 @@ struct rec {
 	const unsigned char *d; /* data */
 	unsigned dlen;
 };
+
+/* A BOUNDARY whose edges cross (properly: one passes through the other;
+ * touching, as keyhole polygons do, is allowed) has no one filling: it
+ * is refused, as splat's polygon statement refuses it.  Edges sorted by
+ * their least x are swept, each tested against the edges still open; a
+ * crossing polygon is found at its first crossing, a simple one costs the
+ * overlaps of its edges' x ranges (at most 8191 points: an XY record). */
+static int64_t orient64(const int64_t *a, const int64_t *b, const int64_t *c)
+{
+	int64_t v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+	return (v > 0) - (v < 0);
+}
+
+static const int64_t *cross_pts;
+static int cmp_edge_x(const void *x, const void *y)
+{
+	int i = *(const int *)x, j = *(const int *)y;
+	int64_t a = cross_pts[2 * i] < cross_pts[2 * i + 2] ? cross_pts[2 * i] : cross_pts[2 * i + 2];
+	int64_t b = cross_pts[2 * j] < cross_pts[2 * j + 2] ? cross_pts[2 * j] : cross_pts[2 * j + 2];
+	return a != b ? (a > b) - (a < b) : (i > j) - (i < j);
+}
+
+static void check_crossing(const struct gds_lib *g, const struct elem *e)
+{
+	int n = e->nxy - 1;     /* edges: the last point closes the ring */
+	if (n < 4)
+		return;
+	int64_t *p = xreallocarray(NULL, 2 * (size_t)n + 2, sizeof *p);
+	int *ord = xreallocarray(NULL, (size_t)n, sizeof *ord);
+	for (int i = 0; i <= n; i++) {
+		p[2 * i] = si32(g->buf + e->xy + 8 * (size_t)i);
+		p[2 * i + 1] = si32(g->buf + e->xy + 8 * (size_t)i + 4);
+		if (i < n)
+			ord[i] = i;
+	}
+	cross_pts = p;
+	qsort(ord, (size_t)n, sizeof *ord, cmp_edge_x);
+	int bad_i = -1, bad_j = -1;
+	for (int u = 0; u < n && bad_i < 0; u++) {
+		int i = ord[u];
+		const int64_t *a = p + 2 * i, *b = a + 2;
+		for (int v = u - 1; v >= 0; v--) {
+			int j = ord[v];
+			const int64_t *c = p + 2 * j, *d = c + 2;
+			if ((c[0] > d[0] ? c[0] : d[0]) < (a[0] < b[0] ? a[0] : b[0]))
+				continue;       /* closed before this edge opens */
+			if (orient64(a, b, c) * orient64(a, b, d) < 0 &&
+			    orient64(c, d, a) * orient64(c, d, b) < 0) {
+				bad_i = i < j ? i : j;
+				bad_j = i < j ? j : i;
+				break;
+			}
+		}
+	}
+	free(ord);
+	free(p);
+	if (bad_i >= 0)
+		gds_die(g, e->off, "BOUNDARY crosses itself: edge %d meets edge %d (of %d)",
+			bad_i + 1, bad_j + 1, n);
+}
 
 /* The record at *pos; dies if it does not fit. */
 static void next_rec(const struct gds_lib *g, size_t *pos, struct rec *r)
@@ -296,6 +288,8 @@ done:
 		gds_die(g, e->off, "%s has %d XY points, expected %d", rname(e->kind), e->nxy, need);
 	if (e->kind == R_BOUNDARY && e->nxy < 3)
 		gds_die(g, e->off, "BOUNDARY has %d XY points, expected at least 4", e->nxy);
+	if (e->kind == R_BOUNDARY)
+		check_crossing(g, e);
 	if ((e->kind == R_SREF || e->kind == R_AREF) && !have_name)
 		gds_die(g, e->off, "%s without SNAME", rname(e->kind));
 	if (e->kind == R_AREF && !have_cr)
@@ -307,7 +301,7 @@ static int cmp_cell(const void *a, const void *b)
 	return strcmp(((const struct cell *)a)->name, ((const struct cell *)b)->name);
 }
 
-static int find_cell(const struct gds_lib *g, const char *name, size_t len)
+int gds_find_cell(const struct gds_lib *g, const char *name, size_t len)
 {
 	int lo = 0, hi = g->nc - 1;
 	while (lo <= hi) {
@@ -337,6 +331,51 @@ static struct gds_lib *gds_new(const char *path, const char *ctx)
 
 static void parse(struct gds_lib *g);
 
+/* The first records of the file, checked as parse does before the whole
+ * file is read: a 2 GB file of zeros (sparse) is refused at byte 0, not
+ * after reading it. */
+enum { PREFIX = 65536 };
+static void prefix_chunk(void *ctx, const char *buf, size_t n)
+{
+	struct gds_lib *g = ctx;
+	size_t k = n < PREFIX - g->len ? n : PREFIX - g->len;
+	memcpy(g->buf + g->len, buf, k);
+	g->len += k;
+}
+
+static void check_prefix(struct gds_lib *g)
+{
+	g->buf = xmalloc(PREFIX);
+	g->len = 0;
+	if (lex_compressed(g->path)) {
+		lex_gz_scan(g->path, PREFIX, prefix_chunk, g);
+	} else {
+		FILE *f = fopen(g->path, "rb");
+		if (!f)
+			die("%s: cannot open:", g->path);
+		g->len = fread(g->buf, 1, PREFIX, f);
+		fclose(f);
+	}
+	/* parse's checks of the first two records in its order (the HEADER,
+	 * then the next record's length); the rest, and a record running past
+	 * the prefix, are left to the whole read */
+	size_t pos = 0;
+	for (int k = 0; k < 2 && pos + 4 <= g->len; k++) {
+		const unsigned char *p = g->buf + pos;
+		unsigned len = be16(p);
+		if (len < 4 || len % 2)
+			gds_die(g, pos, "bad record length %u", len);
+		if (pos + len > g->len)
+			break;
+		if (pos == 0 && p[2] != R_HEADER)
+			gds_die(g, 0, "not a GDSII stream file (no HEADER record)");
+		pos += len;
+	}
+	free(g->buf);
+	g->buf = NULL;
+	g->len = 0;
+}
+
 struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 {
 	/* name the statement that asked, not only the file; a device or a
@@ -351,7 +390,9 @@ struct gds_lib *fmt_gds_read(const char *path, const char *ctx)
 		die("%s%s%s: %.3g GB; the reader holds a layout in memory and reads at most "
 		    "%.3g GB", pre, sep, path, (double)st.st_size / 1e9, FMT_GDS_MAX_BYTES / 1e9);
 	struct gds_lib *g = gds_new(path, ctx);
-	g->buf = lex_slurp(path, &g->len);
+	check_prefix(g);
+	/* a compressed layout is counted as it inflates (lex.h) */
+	g->buf = lex_slurp_max(path, ctx, &g->len, FMT_GDS_MAX_BYTES);
 	parse(g);
 	return g;
 }
@@ -465,7 +506,7 @@ static void parse(struct gds_lib *g)
 		struct elem *e = &g->e[i];
 		if (e->kind != R_SREF && e->kind != R_AREF)
 			continue;
-		e->ref = find_cell(g, (const char *)g->buf + e->sname, e->snamelen);
+		e->ref = gds_find_cell(g, (const char *)g->buf + e->sname, e->snamelen);
 		if (e->ref < 0)
 			gds_die(g, e->off, "%s to a missing cell \"%.*s\"", rname(e->kind),
 				(int)(e->snamelen > 60 ? 60 : e->snamelen),
@@ -495,327 +536,3 @@ double fmt_gds_um_per_dbu(const struct gds_lib *g)
 	return g->um;
 }
 
-/* ---- flattening ---- */
-
-struct xform {
-	double a, b, c, d, tx, ty;      /* x' = a x + b y + tx, y' = c x + d y + ty (dbu) */
-	double mag, angle;              /* degrees */
-	int reflect;
-};
-
-static void cos_sin(double deg, double *c, double *s)
-{
-	double q = deg / 90;
-	if (q == floor(q) && fabs(q) < 1e9) {
-		static const double cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-		long k = ((long)q % 4 + 4) % 4;
-		*c = cs[k][0];
-		*s = cs[k][1];
-		return;
-	}
-	*c = cos(deg * (M_PI / 180));
-	*s = sin(deg * (M_PI / 180));
-}
-
-/* The transform of a reference placed at (x, y) of the parent's frame. */
-static struct xform compose(const struct xform *p, const struct elem *e, double x, double y)
-{
-	struct xform t;
-	t.mag = e->absmag ? e->mag : p->mag * e->mag;
-	t.angle = e->absang ? e->angle : p->angle + (p->reflect ? -e->angle : e->angle);
-	t.reflect = p->reflect ^ e->reflect;
-	double c, s;
-	cos_sin(t.angle, &c, &s);
-	double f = t.reflect ? -1 : 1;
-	t.a = t.mag * c;
-	t.b = -t.mag * s * f;
-	t.c = t.mag * s;
-	t.d = t.mag * c * f;
-	t.tx = p->a * x + p->b * y + p->tx;
-	t.ty = p->c * x + p->d * y + p->ty;
-	return t;
-}
-
-static void apply(const struct xform *t, double x, double y, double *ox, double *oy)
-{
-	*ox = t->a * x + t->b * y + t->tx;
-	*oy = t->c * x + t->d * y + t->ty;
-}
-
-struct flat {
-	const struct gds_lib *g;
-	int layer, datatype;
-	int cull;
-	double win[4];          /* dbu of the top frame */
-	struct poly_set *out;
-	long shapes;
-	long visits;
-};
-
-static double to_um(const struct gds_lib *g, double v)
-{
-	return g->div ? v / (double)g->div : v * g->um;
-}
-
-static int box_misses(const struct flat *f, double x0, double x1, double y0, double y1)
-{
-	return f->cull && (x1 < f->win[0] || x0 > f->win[1] || y1 < f->win[2] || y0 > f->win[3]);
-}
-
-/* Adds polygon xy (n vertices, top-frame dbu) in micrometres. */
-static void out_poly(struct flat *f, double *xy, int n)
-{
-	double x0 = xy[0], x1 = xy[0], y0 = xy[1], y1 = xy[1];
-	for (int i = 1; i < n; i++) {
-		x0 = fmin(x0, xy[2 * i]); x1 = fmax(x1, xy[2 * i]);
-		y0 = fmin(y0, xy[2 * i + 1]); y1 = fmax(y1, xy[2 * i + 1]);
-	}
-	if (box_misses(f, x0, x1, y0, y1))
-		return;
-	for (int i = 0; i < 2 * n; i++)
-		xy[i] = to_um(f->g, xy[i]);
-	n = poly_dedup(xy, n);
-	if (n >= 3)
-		poly_set_add(f->out, xy, n);
-}
-
-static void shape(struct flat *f, const struct elem *e, const struct xform *t)
-{
-	struct gds_lib *g = (struct gds_lib *)f->g;
-	const unsigned char *p = g->buf + e->xy;
-	xgrow(&g->tmp, &g->tcap, 2 * (size_t)e->nxy + 2, sizeof *g->tmp);
-	double *tmp = g->tmp;
-	for (int i = 0; i < e->nxy; i++)
-		apply(t, si32(p + 8 * i), si32(p + 8 * i + 4), &tmp[2 * i], &tmp[2 * i + 1]);
-	f->shapes++;
-	if (e->kind != R_PATH) {
-		out_poly(f, tmp, e->nxy);
-		return;
-	}
-	/* a negative width is absolute: not scaled by the magnification */
-	double hw = e->width < 0 ? -(double)e->width / 2 : (double)e->width * t->mag / 2;
-	double e0 = 0, e1 = 0, rt = 0;
-	if (e->pathtype == 2)
-		e0 = e1 = hw;
-	else if (e->pathtype == 4) {
-		e0 = e->bgnextn * t->mag;
-		e1 = e->endextn * t->mag;
-	} else if (e->pathtype == 1)
-		rt = 1e-3 / f->g->um;   /* 1 nm in dbu */
-	struct poly_set *ps = &g->path_out;
-	ps->n = 0;
-	if (ps->start)
-		ps->start[0] = 0;
-	poly_path(ps, tmp, e->nxy, hw, e0, e1, rt);
-	for (int i = 0; i < ps->n; i++) {
-		int nv = poly_set_nv(ps, i);
-		double q[2 * 4096];
-		if (nv > 4096)
-			continue;
-		memcpy(q, poly_set_xy(ps, i), 2 * (size_t)nv * sizeof *q);
-		out_poly(f, q, nv);
-	}
-}
-
-/* Bounding box of a cell's contents (every layer), dbu, with loop check. */
-static void cell_bbox(struct gds_lib *g, int ci, size_t from, int depth)
-{
-	struct cell *c = &g->c[ci];
-	if (c->state == 2)
-		return;
-	if (c->state == 1)
-		gds_die(g, from, "reference loop: cell \"%.60s\" contains itself", c->name);
-	if (depth > GDS_MAX_DEPTH)
-		gds_die(g, from, "references nested more than %d deep", GDS_MAX_DEPTH);
-	c->state = 1;
-	double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
-	for (size_t k = c->first; k < c->first + c->n; k++) {
-		const struct elem *e = &g->e[k];
-		const unsigned char *p = g->buf + e->xy;
-		if (e->kind == R_SREF || e->kind == R_AREF) {
-			cell_bbox(g, e->ref, e->off, depth + 1);
-			const struct cell *s = &g->c[e->ref];
-			if (s->empty)
-				continue;
-			struct xform id = {1, 0, 0, 1, 0, 0, 1, 0, 0};
-			double px[3], py[3];
-			for (int i = 0; i < e->nxy; i++) {
-				px[i] = si32(p + 8 * i);
-				py[i] = si32(p + 8 * i + 4);
-			}
-			struct xform t = compose(&id, e, 0, 0);
-			/* the corners of the child's box at the array's four corners */
-			for (int a = 0; a < 2; a++)
-				for (int b = 0; b < 2; b++) {
-					double ox = px[0], oy = py[0];
-					if (e->kind == R_AREF) {
-						ox += a * (px[1] - px[0]) * (e->cols - 1) / e->cols +
-						      b * (px[2] - px[0]) * (e->rows - 1) / e->rows;
-						oy += a * (py[1] - py[0]) * (e->cols - 1) / e->cols +
-						      b * (py[2] - py[0]) * (e->rows - 1) / e->rows;
-					}
-					for (int u = 0; u < 2; u++)
-						for (int v = 0; v < 2; v++) {
-							double x, y;
-							apply(&t, (double)s->bb[u], (double)s->bb[2 + v], &x, &y);
-							x += ox;
-							y += oy;
-							bb[0] = fmin(bb[0], x); bb[1] = fmax(bb[1], x);
-							bb[2] = fmin(bb[2], y); bb[3] = fmax(bb[3], y);
-						}
-				}
-		} else {
-			/* paths reach out by their half-width and extensions */
-			double grow = 0;
-			if (e->kind == R_PATH) {
-				double w = fabs((double)e->width);
-				grow = w / 2 + fmax(fabs((double)e->bgnextn), fabs((double)e->endextn)) + w;
-			}
-			for (int i = 0; i < e->nxy; i++) {
-				double x = si32(p + 8 * i), y = si32(p + 8 * i + 4);
-				bb[0] = fmin(bb[0], x - grow); bb[1] = fmax(bb[1], x + grow);
-				bb[2] = fmin(bb[2], y - grow); bb[3] = fmax(bb[3], y + grow);
-			}
-		}
-	}
-	c->empty = !(bb[1] >= bb[0]);
-	for (int i = 0; i < 4 && !c->empty; i++)
-		c->bb[i] = (int64_t)(i % 2 ? ceil(fmin(bb[i], 9e18)) : floor(fmax(bb[i], -9e18)));
-	c->state = 2;
-}
-
-static void flatten(struct flat *f, int ci, const struct xform *t)
-{
-	const struct gds_lib *g = f->g;
-	const struct cell *c = &g->c[ci];
-	if (c->empty)
-		return;
-	if (f->cull) {
-		double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-		for (int u = 0; u < 2; u++)
-			for (int v = 0; v < 2; v++) {
-				double x, y;
-				apply(t, (double)c->bb[u], (double)c->bb[2 + v], &x, &y);
-				x0 = fmin(x0, x); x1 = fmax(x1, x);
-				y0 = fmin(y0, y); y1 = fmax(y1, y);
-			}
-		if (box_misses(f, x0, x1, y0, y1))
-			return;
-	}
-	for (size_t k = c->first; k < c->first + c->n; k++) {
-		const struct elem *e = &g->e[k];
-		if (++f->visits > g->max_visit)
-			gds_die(g, e->off, "flattening visits more than %ld elements (arrays of "
-				"arrays?); refusing", g->max_visit);
-		if (e->kind == R_SREF || e->kind == R_AREF) {
-			const unsigned char *p = g->buf + e->xy;
-			double px[3], py[3];
-			for (int i = 0; i < e->nxy; i++) {
-				px[i] = si32(p + 8 * i);
-				py[i] = si32(p + 8 * i + 4);
-			}
-			/* an array is refused whole before its first copy */
-			if ((double)e->cols * e->rows > (double)(g->max_visit - f->visits))
-				gds_die(g, e->off, "an AREF of %d x %d copies takes flattening past "
-					"%ld elements; refusing", e->cols, e->rows, g->max_visit);
-			for (int j = 0; j < e->rows; j++)
-				for (int i = 0; i < e->cols; i++) {
-					double x = px[0], y = py[0];
-					if (e->kind == R_AREF) {
-						x += (px[1] - px[0]) * i / e->cols + (px[2] - px[0]) * j / e->rows;
-						y += (py[1] - py[0]) * i / e->cols + (py[2] - py[0]) * j / e->rows;
-						if ((i || j) && ++f->visits > g->max_visit)
-							gds_die(g, e->off, "flattening visits more than %ld "
-								"elements (arrays of arrays?); refusing",
-								g->max_visit);
-					}
-					struct xform ct = compose(t, e, x, y);
-					flatten(f, e->ref, &ct);
-				}
-			continue;
-		}
-		if (e->layer != f->layer || (f->datatype >= 0 && e->datatype != f->datatype))
-			continue;
-		shape(f, e, t);
-	}
-}
-
-static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
-		   const double *win, struct poly_set *out);
-
-long fmt_gds_shapes(const struct gds_lib *cg, const char *cell, int layer, int datatype,
-		    const double *win, struct poly_set *out)
-{
-	char err[640];
-	long n = fmt_gds_shapes_try((struct gds_lib *)cg, cell, layer, datatype, win, out,
-				    err, sizeof err);
-	if (n < 0)
-		die("%s", err);
-	return n;
-}
-
-long fmt_gds_shapes_try(struct gds_lib *g, const char *cell, int layer, int datatype,
-			const double *win, struct poly_set *out, char *err, size_t errlen)
-{
-	jmp_buf jb;
-	g->jmp = &jb;
-	if (setjmp(jb)) {
-		g->jmp = NULL;
-		snprintf(err, errlen, "%s", g->err);
-		/* a walk cut short leaves cells marked as on the path */
-		for (int i = 0; i < g->nc; i++)
-			if (g->c[i].state == 1)
-				g->c[i].state = 0;
-		return -1;
-	}
-	long n = shapes(g, cell, layer, datatype, win, out);
-	g->jmp = NULL;
-	return n;
-}
-
-static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
-		   const double *win, struct poly_set *out)
-{
-	int top = -1;
-	if (cell) {
-		top = find_cell(g, cell, strlen(cell));
-		if (top < 0)
-			gds_die(g, 0, "no cell named \"%.60s\"", cell);
-	} else {
-		char list[400];
-		size_t ll = 0;
-		int ntop = 0;
-		list[0] = '\0';
-		for (int i = 0; i < g->nc; i++)
-			if (!g->c[i].referenced) {
-				if (ntop++ == 0)
-					top = i;
-				if (ll < sizeof list - 80)
-					ll += (size_t)snprintf(list + ll, sizeof list - ll, "%s\"%.60s\"",
-							       ntop > 1 ? ", " : "", g->c[i].name);
-			}
-		if (ntop == 0)
-			gds_die(g, 0, g->nc ? "no top cell (every cell is referenced: a reference loop)"
-				: "the library has no cell");
-		if (ntop > 1)
-			gds_die(g, 0, "%d top cells, give \"cell NAME\": %s", ntop, list);
-	}
-	cell_bbox(g, top, g->c[top].off, 0);
-	struct flat f;
-	memset(&f, 0, sizeof f);
-	f.g = g;
-	f.layer = layer;
-	f.datatype = datatype;
-	f.out = out;
-	if (win) {
-		f.cull = 1;
-		for (int i = 0; i < 4; i++)
-			f.win[i] = win[i] / g->um;
-		/* a little slack: culling must never drop a shape that touches */
-		double s = 1e-6 * (fabs(f.win[1] - f.win[0]) + fabs(f.win[3] - f.win[2]));
-		f.win[0] -= s; f.win[1] += s; f.win[2] -= s; f.win[3] += s;
-	}
-	struct xform id = {1, 0, 0, 1, 0, 0, 1, 0, 0};
-	flatten(&f, top, &id);
-	return f.shapes;
-}

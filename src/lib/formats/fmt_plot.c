@@ -1,5 +1,6 @@
 /* fmt_plot.c - see fmt_plot.h. */
 #include "fmt_plot.h"
+#include "budget.h"
 #include "surf.h"
 #include "checked.h"
 #include "lex.h"
@@ -46,10 +47,16 @@ static const char *coord_names[3] = {"x", "y", "z"};
 
 /* Numbers in a sample of text: runs of characters that are neither
  * white space nor commas, outside '#' lines. */
-static double count_numbers(const char *b, size_t n)
+struct number_count {
+	double count;
+	int in, comment;
+};
+
+static void count_chunk(void *ctx, const char *b, size_t n)
 {
-	double count = 0;
-	int in = 0, comment = 0;
+	struct number_count *c = ctx;
+	double count = c->count;
+	int in = c->in, comment = c->comment;
 	for (size_t i = 0; i < n; i++) {
 		char ch = b[i];
 		if (ch == '\n') {
@@ -67,7 +74,16 @@ static double count_numbers(const char *b, size_t n)
 			count++;
 		in = !sep;
 	}
-	return count;
+	c->count = count;
+	c->in = in;
+	c->comment = comment;
+}
+
+static double count_numbers(const char *b, size_t n)
+{
+	struct number_count c = {0, 0, 0};
+	count_chunk(&c, b, n);
+	return c.count;
 }
 
 static int ends_in(const char *s, const char *suffix)
@@ -84,9 +100,13 @@ int fmt_plot_size(const char *path, double *text, double *numbers)
 		return 0;
 	double size = (double)st.st_size;
 	if (ends_in(path, ".gz") || ends_in(path, ".Z")) {
-		/* a triangle file's density: about 21 bytes a number */
-		*text = size * PLOT_GZ_RATIO;
-		*numbers = *text / 21;
+		/* its size is known only by inflating it: counted as it comes,
+		 * held nowhere, and only until it is beyond the memory limit
+		 * (then the estimate refuses it anyway) */
+		struct number_count c = {0, 0, 0};
+		double max = budget_big() ? 1e300 : budget_memory();
+		*text = lex_gz_scan(path, max, count_chunk, &c);
+		*numbers = c.count;
 		return 1;
 	}
 	*text = size;

@@ -57,11 +57,11 @@ struct plot_set *fmt_plot_add_set(struct plot_file *pf, const double *bounds);
 void fmt_plot_add_curve(struct plot_file *pf, struct plot_set *s, int npts,
 			const double *p);
 /* The size of a plot file before it is read, for a reader's estimate of
- * its memory and time (budget.h): *text the bytes of its text (a
- * compressed file counts PLOT_GZ_RATIO times its size), *numbers the
- * numbers it holds, from the density of its first PLOT_SAMPLE bytes.
+ * its memory and time (budget.h): *text the bytes of its text, *numbers
+ * the numbers it holds, from the density of its first PLOT_SAMPLE bytes;
+ * a compressed file is inflated and counted through (held nowhere), up
+ * to the memory limit past which it is refused anyway.
  * Returns 0 (and zeros) when the size is unknown: stdin, a pipe. */
-#define PLOT_GZ_RATIO 4.0
 #define PLOT_SAMPLE 65536
 int fmt_plot_size(const char *path, double *text, double *numbers);
 /* Reads a 2D (dim 2) or 3D (dim 3) plot file. */

@@ -104,6 +104,13 @@ static int same_grid(const struct contour *a, const struct contour *b)
 	       a->ymax == b->ymax && a->nx == b->nx && a->ny == b->ny;
 }
 
+static void grid_text(char *buf, size_t n, const struct contour *c)
+{
+	char v[4][NUM_BUFSZ];
+	snprintf(buf, n, "%s %s %s %s, %dx%d", num_fmt(v[0], c->xmin), num_fmt(v[1], c->xmax),
+		 num_fmt(v[2], c->ymin), num_fmt(v[3], c->ymax), c->nx, c->ny);
+}
+
 struct image_stack *fmt_stack_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
@@ -154,11 +161,11 @@ struct image_stack *fmt_stack_read(const char *path)
 		s->plane[s->n++] = c;
 		const struct contour *c0 = s->plane[0];
 		if (!same_grid(c, c0)) {
+			/* shortest round-trip numbers: windows that differ by
+			 * 1e-10 must not print alike */
 			char a[200], b[200];
-			snprintf(a, sizeof a, "%g %g %g %g, %dx%d", c->xmin, c->xmax, c->ymin,
-				 c->ymax, c->nx, c->ny);
-			snprintf(b, sizeof b, "%g %g %g %g, %dx%d", c0->xmin, c0->xmax, c0->ymin,
-				 c0->ymax, c0->nx, c0->ny);
+			grid_text(a, sizeof a, c);
+			grid_text(b, sizeof b, c0);
 			die("%s:%ld: plane %d has window and grid %s, plane 1 has %s", lex_name(lx),
 			    line, k + 1, a, b);
 		}

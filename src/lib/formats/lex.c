@@ -2,9 +2,13 @@
  * lex.c - see lex.h.  Compressed input goes through a child "gzip -dc"
  * started with fork/exec (no shell, so any file name is safe); its exit
  * status is checked so that a corrupt archive is an error, not a short
- * file.
+ * file.  Its size is known only as it comes: the decompressed bytes are
+ * counted while reading and the read stops, in one line, past the memory
+ * limit (budget.h) or LEX_MAX_TEXT, so that a small archive cannot inflate
+ * into gigabytes first.
  */
 #include "lex.h"
+#include "budget.h"
 #include "num.h"
 #include "util.h"
 
@@ -14,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,13 +46,32 @@ static int ends_with(const char *s, const char *suffix)
 	return n > m && strcmp(s + n - m, suffix) == 0;
 }
 
-static char *read_fd(int fd, const char *name, size_t *len)
+/* The most a compressed file or stdin may give: max bytes (0: the
+ * default, LEX_MAX_TEXT), and without -big no more than the memory
+ * limit. */
+static double stream_cap(double max)
 {
-	size_t cap = 0, n = 0;
+	if (max <= 0)
+		max = LEX_MAX_TEXT;
+	if (!budget_big())
+		max = fmin(max, budget_memory());
+	return max;
+}
+
+/* Reads fd to its end, or until more than cap bytes (0: no limit) have
+ * come: then *over is set and the buffer holds what came. */
+static char *read_fd(int fd, const char *name, size_t *len, double cap, int *over)
+{
+	size_t cap0 = 0, n = 0;
 	char *buf = NULL;
+	*over = 0;
 	for (;;) {
-		xgrow(&buf, &cap, n + 65536 + 1, 1);
-		ssize_t r = read(fd, buf + n, cap - n - 1);
+		if (cap > 0 && (double)n > cap) {
+			*over = 1;
+			break;
+		}
+		xgrow(&buf, &cap0, n + 65536 + 1, 1);
+		ssize_t r = read(fd, buf + n, cap0 - n - 1);
 		if (r < 0) {
 			if (errno == EINTR)
 				continue;
@@ -62,7 +86,17 @@ static char *read_fd(int fd, const char *name, size_t *len)
 	return buf;
 }
 
-static char *read_gzip(const char *path, size_t *len)
+static _Noreturn void too_big(const char *ctx, const char *name, double cap)
+{
+	char b[16];
+	die("%s%s%s: decompresses or streams to more than %s, beyond %s: use -big or "
+	    "SAMPLE3D_BIG=1 to read it anyway", ctx ? ctx : "", ctx ? ": " : "", name,
+	    budget_bytes(b, cap),
+	    cap < LEX_MAX_TEXT ? "the memory limit" : "what a reader holds");
+}
+
+/* Starts "gzip -dc path" writing into *fd. */
+static pid_t start_gzip(const char *path, int *fd)
 {
 	int pfd[2];
 	if (pipe(pfd) != 0)
@@ -80,36 +114,108 @@ static char *read_gzip(const char *path, size_t *len)
 		_exit(127);
 	}
 	close(pfd[1]);
-	char *buf = read_fd(pfd[0], path, len);
-	close(pfd[0]);
+	*fd = pfd[0];
+	return pid;
+}
+
+/* Waits for gzip; stopped (the reader had enough) is not an error. */
+static int wait_gzip(const char *path, pid_t pid, int stopped)
+{
+	if (stopped)
+		kill(pid, SIGTERM);
 	int st;
 	while (waitpid(pid, &st, 0) < 0)
 		if (errno != EINTR)
 			die("%s: waiting for gzip:", path);
+	if (stopped)
+		return 0;
 	if (WIFEXITED(st) && WEXITSTATUS(st) == 127)
 		die("%s: cannot run gzip to read a compressed file", path);
 	if (!WIFEXITED(st) || WEXITSTATUS(st) != 0)
 		die("%s: gzip -dc failed: corrupt or not a compressed file", path);
+	return 0;
+}
+
+static char *read_gzip(const char *path, const char *ctx, size_t *len, double cap)
+{
+	int fd, over;
+	pid_t pid = start_gzip(path, &fd);
+	char *buf = read_fd(fd, path, len, cap, &over);
+	close(fd);
+	wait_gzip(path, pid, over);
+	if (over) {
+		free(buf);
+		too_big(ctx, path, cap);
+	}
+	return buf;
+}
+
+double lex_gz_scan(const char *path, double max,
+		   void (*fn)(void *ctx, const char *buf, size_t n), void *ctx)
+{
+	int fd;
+	pid_t pid = start_gzip(path, &fd);
+	static char chunk[65536];
+	double total = 0;
+	int over = 0;
+	for (;;) {
+		ssize_t r = read(fd, chunk, sizeof chunk);
+		if (r < 0 && errno == EINTR)
+			continue;
+		if (r <= 0)
+			break;
+		fn(ctx, chunk, (size_t)r);
+		total += (double)r;
+		if (total > max) {
+			over = 1;
+			break;
+		}
+	}
+	close(fd);
+	/* a corrupt archive is the reader's to report */
+	if (over)
+		kill(pid, SIGTERM);
+	int st;
+	while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
+		;
+	return total;
+}
+
+int lex_compressed(const char *path)
+{
+	return ends_with(path, ".gz") || ends_with(path, ".Z");
+}
+
+void *lex_slurp_max(const char *path, const char *ctx, size_t *len, double max)
+{
+	double cap = stream_cap(max);
+	int over;
+	if (strcmp(path, "-") == 0) {
+		char *buf = read_fd(0, "stdin", len, cap, &over);
+		if (over) {
+			free(buf);
+			too_big(ctx, "stdin", cap);
+		}
+		return buf;
+	}
+	if (lex_compressed(path)) {
+		FILE *t = fopen(path, "rb");
+		if (!t)
+			die("%s: cannot open:", path);
+		fclose(t);
+		return read_gzip(path, ctx, len, cap);
+	}
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		die("%s: cannot open:", path);
+	char *buf = read_fd(fileno(f), path, len, 0, &over);
+	fclose(f);
 	return buf;
 }
 
 void *lex_slurp(const char *path, size_t *len)
 {
-	if (strcmp(path, "-") == 0)
-		return read_fd(0, "stdin", len);
-	if (ends_with(path, ".gz") || ends_with(path, ".Z")) {
-		FILE *t = fopen(path, "rb");
-		if (!t)
-			die("%s: cannot open:", path);
-		fclose(t);
-		return read_gzip(path, len);
-	}
-	FILE *f = fopen(path, "rb");
-	if (!f)
-		die("%s: cannot open:", path);
-	char *buf = read_fd(fileno(f), path, len);
-	fclose(f);
-	return buf;
+	return lex_slurp_max(path, NULL, len, 0);
 }
 
 static struct lex *lex_new(const char *name, char *buf, size_t len)

@@ -27,8 +27,22 @@ struct lex *lex_from_memory(const char *name, const void *data, size_t len);
 void lex_close(struct lex *lx);
 
 /* Reads the whole of path into a malloc'd buffer (gzip-aware); the caller
- * frees it.  Used for binary formats. */
+ * frees it.  Used for binary formats.  A compressed file or stdin is
+ * counted as it comes and refused in one line past LEX_MAX_TEXT bytes or,
+ * without -big, past the memory limit (budget.h); lex_slurp_max lowers
+ * the first to max bytes (0: LEX_MAX_TEXT) and puts "ctx: " (if not
+ * NULL) before the file in its messages.  lex_open reads the same way. */
+#define LEX_MAX_TEXT 4e9
 void *lex_slurp(const char *path, size_t *len);
+void *lex_slurp_max(const char *path, const char *ctx, size_t *len, double max);
+/* 1 if path names a compressed file (.gz, .Z). */
+int lex_compressed(const char *path);
+/* Streams the decompressed bytes of compressed file path to fn, chunk by
+ * chunk, holding none of them, and stops once more than max bytes have
+ * come; returns the bytes seen.  A corrupt archive just ends early (the
+ * reader reports it).  For estimates made before a read. */
+double lex_gz_scan(const char *path, double max,
+		   void (*fn)(void *ctx, const char *buf, size_t n), void *ctx);
 
 /* Next whitespace/comma-separated token, or NULL at end of input. */
 const char *lex_token(struct lex *lx);

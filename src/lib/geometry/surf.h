@@ -73,6 +73,13 @@ size_t surf_line_spans(const struct surf *s, const struct surf_section *sec,
 struct surf_span surf_span_at(const struct surf *s, const struct surf_section *sec,
 			      int axis, double c, double t);
 
+/* About how many triangle tests surf_region_area(s, sec, .., h, ..)
+ * makes: its lines and their cuts (*stretches, each a span it may hold),
+ * NSAMPLE ray tests each, every test looking at the triangles of one cell
+ * of the index.  For an estimate before it (a self-crossing surface
+ * measured anyway has cuts on every line). */
+double surf_region_tests(const struct surf *s, const struct surf_section *sec, double h,
+			 double *stretches);
 /* The developed region of the section that contains (x, y): its area
  * (um2), from spans on lines parallel to x every h um (one of them
  * through y), joined where they overlap on neighbouring lines.  0 if

@@ -282,6 +282,20 @@ static double *bucket_cuts(const struct surf_section *sec, double y, double h,
 	return cut;
 }
 
+double surf_region_tests(const struct surf *s, const struct surf_section *sec, double h,
+			 double *stretches)
+{
+	/* the cuts of the lines: each segment crosses about its height / h */
+	double cuts = 0;
+	for (size_t k = 0; k < sec->nseg; k++)
+		cuts += fabs(sec->seg[4 * k + 3] - sec->seg[4 * k + 1]) / h + 1;
+	double lines = (s->box[3] - s->box[2]) / h + 1;
+	double cells = (double)s->gnx * s->gny;
+	double per = cells > 0 ? (double)s->gstart[s->gnx * s->gny] / cells + 1 : (double)s->ntri;
+	*stretches = lines + cuts;
+	return (lines + cuts) * NSAMPLE * per;
+}
+
 void surf_region_box(const struct surf *s, const struct surf_section *sec,
 		 double x, double y, double h, struct surf_region_box *rg)
 {

@@ -92,6 +92,10 @@ int args_str(struct args *a, const char *opt, const char **val)
 		return 1;
 	}
 	*val = a->argv[a->i + 1];
+	/* an output named by nothing is found now, not after the run, in
+	 * one line (a usage error, without the usage: nothing is unknown) */
+	if (!**val && (!strcmp(opt, "-o") || !strcmp(opt, "-plot") || !strcmp(opt, "-svg")))
+		die_status(EXIT_USAGE, "option %s: an empty file name", opt);
 	a->i += 2;
 	return 1;
 }

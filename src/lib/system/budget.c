@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 static int big;
@@ -36,9 +37,20 @@ static double memory_env(void)
 	return *end == '\0' && v > 0 && v < 1e300 ? v : 0;
 }
 
+/* The address space a process may have (ulimit -v), bytes, 0 if none. */
+static double address_limit(void)
+{
+	struct rlimit rl;
+	if (getrlimit(RLIMIT_AS, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY)
+		return 0;
+	return (double)rl.rlim_cur;
+}
+
 double budget_memory(void)
 {
-	double m = machine_memory(), e = memory_env();
+	double m = machine_memory(), e = memory_env(), a = address_limit();
+	if (a > 0 && a < m)
+		m = a;
 	return e > 0 && e < m ? e : m;
 }
 
@@ -65,6 +77,11 @@ static const char *seconds_text(char *buf, double s)
 	return buf;
 }
 
+int budget_big(void)
+{
+	return big || big_env();
+}
+
 void budget_check(const char *where, const char *what, double seconds, double bytes)
 {
 	double mem = budget_memory();
@@ -83,5 +100,7 @@ void budget_check(const char *where, const char *what, double seconds, double by
 	die("%s: %s need about %s of work and %s of memory, beyond the limits "
 	    "(1 h of work, the %s of memory %s): use -big or "
 	    "SAMPLE3D_BIG=1 to run it anyway", where, what, t, b, m,
-	    mem < machine_memory() ? "SAMPLE3D_MEMORY allows" : "of this machine");
+	    mem >= machine_memory() ? "of this machine" :
+	    memory_env() > 0 && mem >= memory_env() ? "SAMPLE3D_MEMORY allows" :
+	    "the address-space limit (ulimit -v) allows");
 }

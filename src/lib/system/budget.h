@@ -19,9 +19,13 @@
 
 /* -big given: budget_check only reports. */
 void budget_allow_big(void);
+/* 1 if -big was given or SAMPLE3D_BIG is set: for a reader that refuses
+ * by itself, in its own words, what budget_check would. */
+int budget_big(void);
 /* The memory limit: the machine's physical memory, bytes, or less if the
- * environment variable SAMPLE3D_MEMORY gives a smaller byte count (a
- * shared machine; tests of a refusal with small inputs). */
+ * process's address space is limited (ulimit -v) or the environment
+ * variable SAMPLE3D_MEMORY gives a smaller byte count (a shared machine;
+ * tests of a refusal with small inputs). */
 double budget_memory(void);
 /* Dies "where: what needs about S s and B of memory (...): use -big ..."
  * if seconds or bytes are beyond the limits and neither -big nor

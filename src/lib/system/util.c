@@ -255,7 +255,17 @@ static int special_target(const char *path)
 struct aout *aout_open(const char *path)
 {
 	struct aout *a = xcalloc(1, sizeof *a);
-	a->path = xstrdup(path);
+	if (!*path)
+		die("an output file with an empty name");
+	/* a symbolic link to a file: the file is replaced and the link
+	 * stays (renaming onto the link would replace the link itself) */
+	struct stat ls;
+	char *real = NULL;
+	if (lstat(path, &ls) == 0 && S_ISLNK(ls.st_mode))
+		real = realpath(path, NULL);
+	a->path = xstrdup(real ? real : path);
+	free(real);
+	path = a->path;
 	if (strcmp(path, "-") == 0) {
 		a->f = stdout;
 		return a;

@@ -11,7 +11,8 @@
 # reader with clang's -fsanitize=fuzzer,address,undefined and linked with
 # the library built the same way (in DIR/obj); the GDSII reader's target
 # is tests/fuzz/fuzz_gds.c (-DS3D_LIBFUZZER), which runs the reader's
-# non-exiting entry points in process.  Seeds: tests/fuzz/corpus/
+# non-exiting entry points in process; measure_args and fem_args are the
+# command lines of measure and fem (tests/fuzz/targets/fuzz_args.c).  Seeds: tests/fuzz/corpus/
 # READER/; the corpus a run grows: DIR/corpus/READER/; what it finds (a
 # crash, a sanitizer report, a hang over 10 s, more than 1 GB):
 # DIR/findings/READER-*.  Every finding, once fixed, goes to
@@ -22,7 +23,7 @@ dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 secs=${3:-60}
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 CLANG=${FUZZ_CC:-clang}
-READERS="splat bleach contour stack plot2d plot3d options template rate_ascii rate_binary gds"
+READERS="splat bleach contour stack plot2d plot3d options template rate_ascii rate_binary gds measure_args fem_args"
 FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11"
 for d in "$top"/src/lib/*/; do FLAGS="$FLAGS -I${d%/}"; done
 
@@ -42,15 +43,35 @@ for src in "$top"/src/lib/*/*.c; do
 		echo "$CLANG -fsanitize=fuzzer-no-link $FLAGS -c -o $o $src"
 	fi
 done | xargs -P 2 -I{} sh -c '{}' || { echo "fuzz: building the library failed" >&2; exit 1; }
+# measure's own files for measure_args, its main renamed
+mobjs=""
+for src in "$top"/src/measure/*.c; do
+	o=$dir/obj/measure_$(basename "$src" .c).o
+	mobjs="$mobjs $o"
+	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$top/src" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
+		$CLANG -fsanitize=fuzzer-no-link $FLAGS -I"$top/src/measure" -Dmain=measure_main \
+			-c -o "$o" "$src" || { echo "fuzz: building measure failed" >&2; exit 1; }
+	fi
+done
+WRAP=-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free
 for r in $READERS; do
 	t=$dir/fuzz_$r
 	src=$top/tests/fuzz/targets/fuzz_reader.c
 	[ "$r" = gds ] && src=$top/tests/fuzz/fuzz_gds.c
+	case $r in *_args) src=$top/tests/fuzz/targets/fuzz_args.c ;; esac
 	if [ ! -x "$t" ] || [ "$src" -nt "$t" ] ||
 	   [ -n "$(find "$dir/obj" -name '*.o' -newer "$t")" ]; then
 		if [ "$r" = gds ]; then
 			$CLANG -fsanitize=fuzzer $FLAGS -DS3D_LIBFUZZER -o "$t" "$src" $objs -lm ||
 				{ echo "fuzz: linking $r failed" >&2; exit 1; }
+		elif [ "$r" = measure_args ]; then
+			$CLANG -fsanitize=fuzzer $FLAGS -DARGS_NAME="\"$r\"" -DMEASURE_ARGS \
+				-I"$top/tests/fuzz/targets" -o "$t" $WRAP,--wrap=exit,--wrap=fclose \
+				"$src" $mobjs $objs -lm || { echo "fuzz: linking $r failed" >&2; exit 1; }
+		elif [ "$r" = fem_args ]; then
+			$CLANG -fsanitize=fuzzer $FLAGS -DARGS_NAME="\"$r\"" -DFEM_TOP="\"$top\"" \
+				-I"$top/tests/fuzz/targets" -o "$t" $WRAP \
+				"$src" $objs -lm || { echo "fuzz: linking $r failed" >&2; exit 1; }
 		else
 			$CLANG -fsanitize=fuzzer $FLAGS -DREADER_NAME="\"$r\"" -o "$t" \
 				-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free \
