@@ -80,6 +80,19 @@ static double acid_at(double h0, double a, double kq, double s)
 	return h0 * exp(x) / (1 + kq * h0 * s * phi1(x));
 }
 
+/* x^p, with the usual integer orders by multiplication (pow is most of
+ * a bake's time otherwise) */
+static double powp(double x, double p)
+{
+	if (p == 1)
+		return x;
+	if (p == 2)
+		return x * x;
+	if (p == 3)
+		return x * x * x;
+	return pow(x, p);
+}
+
 /* Gauss-Legendre, 3 points on [-1, 1]. */
 static const double GL_X = 0.7745966692414834, GL_W0 = 8.0 / 9.0, GL_W1 = 5.0 / 9.0;
 
@@ -112,10 +125,11 @@ static double acid_integral(double h0, double a, double kq, double s, double *h1
  * h - q = d held, a = kq d, rate = |a| + kq h0 the fastest time scale of h.
  * Closed forms where there is one, else 3-point Gauss-Legendre on
  * subintervals graded geometrically from 1/rate (so that a quenching
- * transient much shorter than the step is resolved) up to half the
- * relaxation time 1/|a| (relative error of an exponential below 4e-9 an
- * interval), until h is within PEB_REACT_TOL of its asymptote, where the
- * rest of the step has a closed form again. */
+ * transient much shorter than the step is resolved), each at most half
+ * the local time scale of h^p, 1/(max(p, 1) (|a| + kq h)) (h'/h = a - kq h;
+ * relative error of an exponential below 4e-9 an interval), until h is
+ * within PEB_REACT_TOL of its asymptote, where the rest of the step has
+ * a closed form again. */
 static double power_integral(const struct peb_params *pp, double h0, double a, double kq,
 			     double tau)
 {
@@ -137,36 +151,37 @@ static double power_integral(const struct peb_params *pp, double h0, double a, d
 		double u = kq * h0 * tau;
 		return pow(h0, p - 1) * expm1((1 - p) * log1p(u)) / (kq * (1 - p));
 	}
-	double s0 = 0.25 / rate;
-	double wmax = fabs(a) > 0 ? 0.5 / fabs(a) : tau;
-	double sum = 0, lo = 0, w = s0;
+	double s0 = 0.25 / rate, pm = p > 1 ? p : 1;
+	double sum = 0, lo = 0, w = s0, h = h0;
 	for (;;) {
+		double wmax = 0.5 / (pm * (fabs(a) + kq * h));
 		if (w > wmax)
 			w = wmax;
 		double hi = lo + w;
 		if (hi > tau || w <= 0)
 			hi = tau;
 		double c = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
-		double f0 = pow(acid_at(h0, a, kq, c), p);
-		double fm = pow(acid_at(h0, a, kq, c - r * GL_X), p);
-		double fp = pow(acid_at(h0, a, kq, c + r * GL_X), p);
+		double f0 = powp(acid_at(h0, a, kq, c), p);
+		double fm = powp(acid_at(h0, a, kq, c - r * GL_X), p);
+		double fp = powp(acid_at(h0, a, kq, c + r * GL_X), p);
 		sum += r * (GL_W0 * f0 + GL_W1 * (fm + fp));
 		if (hi >= tau)
 			break;
 		lo = hi;
 		w = s0 + 0.25 * hi;
 		/* the rest of the step once h is near its asymptote */
-		double h = acid_at(h0, a, kq, lo), rest = tau - lo;
+		h = acid_at(h0, a, kq, lo);
+		double rest = tau - lo;
 		if (d > 0 && fabs(h - d) <= PEB_REACT_TOL * d) {
 			/* h = d + e, |e| < PEB_REACT_TOL d and shrinking: h^p =
 			 * d^p + p d^{p-1} e up to p |p-1| / 2 of e^2 */
 			double h1, in = acid_integral(h, a, kq, rest, &h1);
-			return sum + pow(d, p) * rest + p * pow(d, p - 1) * (in - d * rest);
+			return sum + powp(d, p) * rest + p * pow(d, p - 1) * (in - d * rest);
 		}
 		if (d < 0 && kq * h <= PEB_REACT_TOL * -a) {
 			/* h = C e^{a t} to a relative PEB_REACT_TOL (the Bernoulli
 			 * term kq h / |a| is that small): e^{p a t} integrated */
-			return sum + pow(h, p) * -expm1(p * a * rest) / (p * -a);
+			return sum + powp(h, p) * -expm1(p * a * rest) / (p * -a);
 		}
 	}
 	return sum;
@@ -188,7 +203,7 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 		return in;
 	}
 	if (kq == 0 || !(q0 > 0))
-		return pow(h0, pp->p) * tau;    /* nothing to neutralise: h constant */
+		return powp(h0, pp->p) * tau;    /* nothing to neutralise: h constant */
 	double h1 = acid_at(h0, a, kq, tau);
 	*hp = h1;
 	*qp = h1 - d;
