@@ -76,8 +76,6 @@ static void one_point(void)
 			double got = peb_react(&pp, pp.t, &h, &q);
 			double want = simpson(h0s[j], pp.q0, pp.kq, ps[i], pp.t);
 			double e = fabs(got - want) / want;
-			if (getenv("PEB_ORDERS_VERBOSE"))
-				printf("p %g h0 %g: %.3g\n", ps[i], h0s[j], e);
 			if (e > err)
 				err = e;
 			pp.q0 = 0;
