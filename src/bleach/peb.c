@@ -83,27 +83,118 @@ static double acid_at(double h0, double a, double kq, double s)
 	return h0 * exp(x) / (1 + kq * h0 * s * phi1(x));
 }
 
+/* x^p, with the usual integer orders by multiplication (pow is most of
+ * a bake's time otherwise) */
+static double powp(double x, double p)
+{
+	if (p == 1)
+		return x;
+	if (p == 2)
+		return x * x;
+	if (p == 3)
+		return x * x * x;
+	return pow(x, p);
+}
+
 /* Gauss-Legendre, 3 points on [-1, 1]. */
 static const double GL_X = 0.7745966692414834, GL_W0 = 8.0 / 9.0, GL_W1 = 5.0 / 9.0;
 
-/* Past PEB_TAIL time constants 1/|a| of the exponential approach, h is
- * its asymptote but for e^-40 (relative): the integral of h^p from lo to
- * tau is then closed: d^p (tau - lo) for a > 0 (h -> d), and for a < 0
- * (more quencher than acid) h = C e^{a t}, C = h0 / (1 - kq h0 / a), whose
- * p-th power integrates to C^p (e^{p a tau} - e^{p a lo}) / (p a).  The
- * subintervals of at most 1/(2|a|) therefore stop after about 80 of
- * them: a bake of 1e4 s with a 1e6 /s quenching had taken 1e10 a step. */
+/* For peb_react_seconds' count of quadrature subintervals (an estimate
+ * for the budget, not the integration below): the exponential approach
+ * is taken as over past PEB_TAIL time constants 1/|a|, and a subinterval
+ * as at most PEB_WMAX of one. */
 #define PEB_TAIL 40.0
 #define PEB_WMAX 0.5
-static double tail(const struct peb_params *pp, double h0, double a, double kq, double lo,
-		   double tau)
+
+/* The integral of h over s from h0 > 0 (kq > 0, h - q = d held, a = kq
+ * d): ln(1 + kq h0 (e^{as} - 1)/a) / kq; h at s into *h1. */
+static double acid_integral(double h0, double a, double kq, double s, double *h1)
 {
-	double p = pp->p;
-	if (a > 0)
-		return pow(a / kq, p) * (tau - lo);
-	double c = h0 / (1 - kq * h0 / a);
-	/* e^{p a lo} (e^{p a (tau - lo)} - 1) / (p a), without cancellation */
-	return pow(c, p) * exp(p * a * lo) * expm1(p * a * (tau - lo)) / (p * a);
+	double x = a * s;
+	if (x > 1) {
+		/* e^x factored out: h = h0 a / (a E + kq h0 (1 - E)) and the
+		 * integral (x + ln((a E + kq h0 (1 - E)) / a)) / kq, E = e^{-x} */
+		double em = -expm1(-x), E = 1 - em;
+		double den = a * E + kq * h0 * em;
+		*h1 = h0 * a / den;
+		return (x + log(den / a)) / kq;
+	}
+	/* one expm1 gives e^x and (e^x - 1)/a */
+	double e1 = fabs(x) < 1e-300 ? 0 : expm1(x);
+	double g = kq * h0 * (e1 == 0 ? s : e1 / a);    /* kq h0 (e^x - 1)/a */
+	*h1 = h0 * (1 + e1) / (1 + g);
+	return log1p(g) / kq;
+}
+
+/* The part of the exponent kamp * integral of h^p that may be left to
+ * rounding or to the cut-off below: m moves by at most that much (m e^{-x}
+ * changes by less than dx), a thousandth of the bake's tolerance PEB_TOL. */
+#define PEB_REACT_TOL 1e-6
+
+/* The integral of h^p over tau for p != 1 and kq > 0, h from h0 > 0 with
+ * h - q = d held, a = kq d, rate = |a| + kq h0 the fastest time scale of h.
+ * Closed forms where there is one, else 3-point Gauss-Legendre on
+ * subintervals graded geometrically from 1/rate (so that a quenching
+ * transient much shorter than the step is resolved), each at most half
+ * the local time scale of h^p, 1/(max(p, 1) (|a| + kq h)) (h'/h = a - kq h;
+ * relative error of an exponential below 4e-9 an interval), until h is
+ * within PEB_REACT_TOL of its asymptote, where the rest of the step has
+ * a closed form again. */
+static double power_integral(const struct peb_params *pp, double h0, double a, double kq,
+			     double tau)
+{
+	double p = pp->p, d = a / kq, rate = fabs(a) + kq * h0;
+	if (p == 2 && rate * tau > 0.25) {
+		/* h^2 = (a h - dh/dt) / kq (the equation of h itself), so the
+		 * integral is (a integral of h - (h1 - h0)) / kq; the two terms
+		 * cancel when the quencher wins (a < 0) by at most h0, so their
+		 * rounding costs kamp h0 2^-52 / kq in the exponent: used when
+		 * that is far below PEB_REACT_TOL */
+		if (pp->kamp * h0 * 1e-15 / kq < 1e-3 * PEB_REACT_TOL) {
+			double h1, in = acid_integral(h0, a, kq, tau, &h1);
+			double r = (a * in - (h1 - h0)) / kq;
+			return r > 0 ? r : 0;
+		}
+	}
+	if (a == 0 && p != 1) {
+		/* no excess either way: h = h0 / (1 + kq h0 t) exactly */
+		double u = kq * h0 * tau;
+		return pow(h0, p - 1) * expm1((1 - p) * log1p(u)) / (kq * (1 - p));
+	}
+	double s0 = 0.25 / rate, pm = p > 1 ? p : 1;
+	double sum = 0, lo = 0, w = s0, h = h0;
+	for (;;) {
+		double wmax = 0.5 / (pm * (fabs(a) + kq * h));
+		if (w > wmax)
+			w = wmax;
+		double hi = lo + w;
+		if (hi > tau || w <= 0)
+			hi = tau;
+		double c = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
+		double f0 = powp(acid_at(h0, a, kq, c), p);
+		double fm = powp(acid_at(h0, a, kq, c - r * GL_X), p);
+		double fp = powp(acid_at(h0, a, kq, c + r * GL_X), p);
+		sum += r * (GL_W0 * f0 + GL_W1 * (fm + fp));
+		if (hi >= tau)
+			break;
+		lo = hi;
+		w = s0 + 0.25 * hi;
+		/* the rest of the step once h is near its asymptote */
+		h = acid_at(h0, a, kq, lo);
+		double rest = tau - lo;
+		if (d > 0 && fabs(h - d) <= PEB_REACT_TOL * d) {
+			/* h = d + e, |e| < PEB_REACT_TOL d and shrinking: h^p =
+			 * d^p + p d^{p-1} e up to p |p-1| / 2 of e^2 */
+			double h1, in = acid_integral(h, a, kq, rest, &h1);
+			return sum + powp(d, p) * rest + p * pow(d, p - 1) * (in - d * rest);
+		}
+		if (d < 0 && kq * h <= PEB_REACT_TOL * -a) {
+			/* h = C e^{a t} to a relative PEB_REACT_TOL (the Bernoulli
+			 * term kq h / |a| is that small): e^{p a t} integrated */
+			return sum + powp(h, p) * -expm1(p * a * rest) / (p * -a);
+		}
+	}
+	return sum;
 }
 
 /* The acid-quencher reaction alone over tau (kloss = 0): h - q = d held,
@@ -116,63 +207,19 @@ static double quench(const struct peb_params *pp, double tau, double *hp, double
 		return 0;       /* no acid: nothing reacts */
 	if (pp->p == 1 && kq > 0) {
 		/* h and its integral from one exponential */
-		double x = a * tau, h1, in;
-		if (x > 1) {
-			/* e^x factored out: h = h0 a / (a E + kq h0 (1 - E)) and
-			 * the integral ln(1 + kq h0 (e^x - 1)/a) / kq, E = e^{-x} */
-			double em = -expm1(-x), E = 1 - em;
-			double den = a * E + kq * h0 * em;
-			h1 = h0 * a / den;
-			in = (x + log(den / a)) / kq;
-		} else {
-			/* one expm1 gives e^x and (e^x - 1)/a */
-			double e1 = fabs(x) < 1e-300 ? 0 : expm1(x);
-			double g = kq * h0 * (e1 == 0 ? tau : e1 / a);  /* kq h0 (e^x - 1)/a */
-			h1 = h0 * (1 + e1) / (1 + g);
-			in = log1p(g) / kq;
-		}
+		double h1, in = acid_integral(h0, a, kq, tau, &h1);
 		*hp = h1;
 		*qp = h1 - d > 0 ? h1 - d : 0;
 		return in;
 	}
+	if (kq == 0 || !(q0 > 0))
+		return powp(h0, pp->p) * tau;    /* nothing to neutralise: h constant */
 	double h1 = acid_at(h0, a, kq, tau);
 	*hp = h1;
 	*qp = h1 - d;
 	if (*qp < 0)
 		*qp = 0;        /* rounding: q never goes below zero */
-	if (pp->p == 1)
-		return h0 * tau;        /* kq = 0: h constant */
-	/* the integral of h^p: subintervals growing geometrically (a quarter
-	 * of the elapsed time plus the fastest time scale 1/rate of h, which
-	 * follows the algebraic decay h0 / (1 + kq h0 t) when d = 0) */
-	double rate = fabs(a) + kq * h0;
-	double s0 = rate > 0 ? 0.25 / rate : tau;
-	/* and never wider than half the time scale 1/|a| of the exponential
-	 * approach that follows the transient (3-point Gauss-Legendre on
-	 * e^{-|a| t} over |a| w = 1/2: within 1e-8 relative) */
-	double wmax = fabs(a) > 0 ? PEB_WMAX / fabs(a) : tau;
-	double sum = 0, lo = 0, w = s0;
-	for (;;) {
-		if (fabs(a) * lo > PEB_TAIL && lo < tau) {
-			sum += tail(pp, h0, a, kq, lo, tau);
-			break;
-		}
-		if (w > wmax)
-			w = wmax;
-		double hi = lo + w;
-		if (hi > tau || w <= 0)
-			hi = tau;
-		double c = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
-		double f0 = pow(acid_at(h0, a, kq, c), pp->p);
-		double fm = pow(acid_at(h0, a, kq, c - r * GL_X), pp->p);
-		double fp = pow(acid_at(h0, a, kq, c + r * GL_X), pp->p);
-		sum += r * (GL_W0 * f0 + GL_W1 * (fm + fp));
-		if (hi >= tau)
-			break;
-		lo = hi;
-		w = s0 + 0.25 * hi;
-	}
-	return sum;
+	return power_integral(pp, h0, a, kq, tau);
 }
 
 /* seconds a Gauss-Legendre subinterval of quench (three pow, three

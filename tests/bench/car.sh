@@ -7,7 +7,18 @@
 # the resist is examples/car-krf-lines' 0.30 um thick on 200 points (1.5 nm,
 # fine enough that the bake needs no z refinement).  One thread,
 # best of two runs (elapsed and CPU seconds: on a loaded machine the CPU
-# time is the figure); prints the step count bleach chose.  Asserts nothing.
+# time is the figure); prints the step count bleach chose.
+# Then the bake's cliff cases, each with this tree's bleach and with the
+# base revision's (CAR_BASE, default daa8435: main before the closed-form
+# integrals of h^p) exported with git archive and built in a temporary
+# directory, in the same run: CPU seconds old and new, seconds per million
+# bake points per bake minute, and the largest difference of m between the
+# two (both within 1e-3 of a converged bake).  The cases: a clear-field
+# column 3 x 3 x 401 and a 0.6 um-pitch line image 61 x 61 x 201 (401 bake
+# nodes), examples/car-krf-lines' resist at orders 2 and 1, with and
+# without quencher (the clear column runs within /usr/bin/time's 0.01 s
+# resolution: its per-point figure is noise).  The old order-2 line runs
+# take minutes.  Asserts nothing.
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
@@ -38,4 +49,53 @@ if [ -x /usr/bin/time ]; then
 else
 	echo "car: /usr/bin/time missing, timing with the shell only"
 	time "$bin" -q -threads 1 holes.cont resist.in
+	exit 0
 fi
+
+BASE=${CAR_BASE:-daa8435}
+old=
+if git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
+	mkdir -p base
+	if git -C "$TOP" archive "$BASE" | tar -x -C base &&
+		make -s -C base -j2 BUILD=build build/bin/bleach >base.log 2>&1; then
+		old=$tmp/base/build/bin/bleach
+		echo "car: cliff cases, old = $BASE, new = this tree, one thread, CPU seconds"
+	else
+		echo "car: building $BASE failed; new only"
+	fi
+else
+	echo "car: base revision $BASE missing; new only"
+fi
+awk 'BEGIN { print "-0.1 0.1 -0.1 0.1"; print 3, 3; for (i = 0; i < 9; i++) print 1 }' >clear.cont
+awk 'BEGIN { n = 61; print "-0.3 0.3 -0.3 0.3"; print n, n
+	for (j = 0; j < n; j++) for (i = 0; i < n; i++) {
+		x = -0.3 + 0.6 * i / (n - 1)
+		printf "%.12g\n", 0.5 + 0.45 * cos(2 * 3.14159265358979 * x / 0.6) } }' >lines.cont
+# cpu BIN OUT CONT IN: user seconds of one run into $cpu
+cpu() {
+	/usr/bin/time -f "%U" -o c.txt "$1" -q -ascii -threads 1 -o "$2" "$3" "$4" 2>log.txt ||
+		{ echo "car: bleach failed: $(tail -n 1 log.txt)"; exit 1; }
+	cpu=$(tail -n 1 c.txt)
+}
+for c in "clear 401 2 0" "lines 201 2 0" "clear 401 1 0.15" "lines 201 1 0.15" "lines 201 2 0.15"; do
+	set -- $c
+	sed -e "s/^grid nz .*/grid nz $2/" -e "s/order 1/order $3/" -e "s/quencher 0.15/quencher $4/" \
+		"$TOP/examples/car-krf-lines/resist.in" >cliff.in
+	cpu "$bin" new.txt "$1.cont" cliff.in
+	new=$cpu
+	pts=$(awk 'NR == 2 { print $1 * $2 * ($3 * 2 - 1) }' new.txt)
+	[ "$1" = clear ] && pts=$(awk 'NR == 2 { print $1 * $2 * $3 }' new.txt)
+	line=$(printf "%s order %s quencher %s, nz %s" "$1" "$3" "$4" "$2")
+	if [ -n "$old" ]; then
+		cpu "$old" old.txt "$1.cont" cliff.in
+		dm=$(awk 'FNR == 1 { f++; m = 0; n = 0 } /^M/ { m = 1; next }
+			m { for (i = 1; i <= NF; i++) { n++; if (f == 1) a[n] = $i
+				else { d = $i - a[n]; if (d < 0) d = -d; if (d > x) x = d } } }
+			END { printf "%.2g", x }' old.txt new.txt)
+		echo "$line $cpu $new $pts $dm" | awk '{ printf "car: %-36s old %7.2f s new %6.2f s (%.2f s per Mpoint-minute) max |dm| %s\n",
+			$1 " " $2 " " $3 " " $4 " " $5 " " $6 " " $7, $8, $9, $9 / ($10 / 1e6), $11 }'
+	else
+		echo "$line $new $pts" | awk '{ printf "car: %-36s new %6.2f s (%.2f s per Mpoint-minute)\n",
+			$1 " " $2 " " $3 " " $4 " " $5 " " $6 " " $7, $8, $8 / ($9 / 1e6) }'
+	fi
+done
