@@ -48,8 +48,8 @@ U
 	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
-# a usage error: one line, exit 2 (the usage is fem --help)
-bad() { echo "$prog: $*; see fem --help" >&2; exit 2; }
+# a usage error: one line (and where the usage is), exit 2
+bad() { usage_error "$*"; }
 # a wrong value: one line, exit 2
 badv() { echo "$prog: $*" >&2; exit 2; }
 say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }

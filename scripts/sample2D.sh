@@ -33,7 +33,7 @@ usage: sample2D -if splat-inputfile -cut x1 y1 x2 y2 -bf bleach-inputfile
 U
 }
 die() { echo "$prog: $*" >&2; exit 1; }
-bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
+bad() { usage_error "$*"; }
 say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 isnum() { case $1 in ''|*[!0-9.eE+-]*) return 1 ;; *) return 0 ;; esac; }
@@ -41,6 +41,10 @@ isnum() { case $1 in ''|*[!0-9.eE+-]*) return 1 ;; *) return 0 ;; esac; }
 # the programs beside this script come first (an uninstalled build tree)
 here=$(cd "$(dirname "$0")" && pwd)
 [ -x "$here/etch2d" ] && PATH="$here:$PATH"
+# usage_error (the two-line usage error with "did you mean"), shared with
+# the other drivers: beside this script
+[ -r "$here/etchopts.sh" ] || { echo "$prog: cannot find etchopts.sh beside $0" >&2; exit 1; }
+. "$here/etchopts.sh"
 
 splat_in="" bleach_in="" cut="" npts=201 etchtime="" printtime="" method=raystring
 e2opts="" plot="" quiet=""

@@ -53,7 +53,7 @@ U
 	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
-bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
+bad() { usage_error "$*"; }
 say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 

@@ -295,7 +295,7 @@ static _Noreturn void usage_die(const char *fmt, ...)
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
-	fputs(usage, stderr);
+	args_hint();
 	exit(EXIT_USAGE);
 }
 

@@ -181,11 +181,12 @@ static void parse_options(int argc, char **argv, struct options *o)
 					   o->h[i]);
 				break;
 			}
+	/* the specific problems first: only the first problem is printed */
+	check_whole(&a, o);
 	if (o->holes && o->have_kind)
 		args_error(&a, "give -holes or one of -hole, -space and -line, not both");
 	else if (!o->have_kind && !o->holes)
 		args_error(&a, "give the feature: -hole X Y, -space X Y x|y or -line X Y x|y");
-	check_whole(&a, o);
 	if (!o->input)
 		args_error(&a, "give the surface file (curves.plot of etch)");
 	args_done(&a, NULL);
