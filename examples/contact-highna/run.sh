@@ -7,6 +7,8 @@
 # thickness to cd.txt.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 for d in -0.3 0.3; do
 	mkdir -p "$out/defocus$d" && cd "$out/defocus$d"
