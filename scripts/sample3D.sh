@@ -119,6 +119,10 @@ if [ -n "$etchtime" ]; then
 	fi
 fi
 
+# the resist file is read up front (bleach -check): a mistake in it, such
+# as "develop kimm", is reported before splat runs
+[ -z "$bleach_in" ] || bleach -check "$bleach_in" || exit 1
+
 # splat: the contour-file is the one the input names (its "contour" line),
 # else splat's default splat.cont
 if [ -n "$splat_in" ]; then

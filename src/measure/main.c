@@ -201,6 +201,14 @@ enum { CROSS_REPORT_MAX = 1000 };
 static struct surf *load(struct options *o, long *setno)
 {
 	struct plot_file *pf = fmt_plot_read(o->input, 3);
+	if (strcmp(pf->labels.title, fmt_labels_std(LABELS_PAC)->title) == 0) {
+		/* bleach -solid's surface of constant PAC closes the box: its
+		 * "CD" would be 0, a number that means nothing */
+		fmt_plot_free(pf);
+		free(o->h);
+		die("%s:1: this is bleach -solid's surface of constant PAC, not a developed "
+		    "surface: measure etch's curves.plot", o->input);
+	}
 	*setno = o->set ? o->set : pf->nsets;
 	if (*setno > pf->nsets) {
 		int n = pf->nsets;

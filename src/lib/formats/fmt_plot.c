@@ -105,6 +105,7 @@ int fmt_plot_size(const char *path, double *text, double *numbers)
 struct plot_file *fmt_plot_read(const char *path, int dim)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, dim == 3 ? "plot3d(5)" : "plot2d(5)");
 	struct plot_file *pf = fmt_plot_new(dim);
 	fmt_labels_read(lx, &pf->labels, dim == 3);
 	if (lex_at_end(lx))
