@@ -204,6 +204,8 @@ void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurve
 {
 	check_set_done(w);
 	if (w->nsets)
+		aout_mark(w->a, w->nsets);      /* the sets so far are whole */
+	if (w->nsets)
 		fputc('\n', w->a->f);
 	num_print_row(w->a->f, bounds, 2 * w->dim);
 	fprintf(w->a->f, "%ld\n", ncurves);
@@ -280,6 +282,7 @@ void fmt_plot_curves(struct plot_writer *w, size_t n, int npts,
 void fmt_plot_close(struct plot_writer *w)
 {
 	check_set_done(w);
+	aout_mark(w->a, w->nsets);
 	aout_commit(w->a);
 	free(w->path);
 	free(w);
