@@ -126,6 +126,7 @@ fuzz:
 
 run: all
 	@cd examples/contact && PATH="$(CURDIR)/$(BUILD)/bin:$$PATH" sh ./run.sh
+	@echo "make run: the pictures are in examples/contact/out/bake and examples/contact/out/nobake (profile.ps, cut.ps, image.ps)"
 
 regen: all
 	@sh tests/regen.sh $(BUILD)

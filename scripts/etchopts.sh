@@ -162,3 +162,46 @@ accuracy_loop() {
 		acc_k=$((acc_k + 1))
 	done
 }
+
+# usage_error MESSAGE: a driver's usage error in two lines at most, then
+# exit 2: "prog: MESSAGE" (an unknown option with "; did you mean -X?"
+# when one option the driver's usage text names is a slip of the keyboard
+# away: the rule of the C programs' args.c, one edit for names up to 5
+# characters, two from 6, a single nearest one), then where the usage is.
+usage_error() {
+	case $1 in
+	"unknown option "*)
+		set -- "$1$(usage | awk -v w="${1#unknown option }" '
+		function dist(a, b,   i, j, la, lb, c, d) {
+			la = length(a); lb = length(b)
+			for (i = 0; i <= la; i++) d[i, 0] = i
+			for (j = 0; j <= lb; j++) d[0, j] = j
+			for (i = 1; i <= la; i++)
+				for (j = 1; j <= lb; j++) {
+					c = d[i-1, j-1] + (substr(a, i, 1) != substr(b, j, 1))
+					if (d[i-1, j] + 1 < c) c = d[i-1, j] + 1
+					if (d[i, j-1] + 1 < c) c = d[i, j-1] + 1
+					if (i > 1 && j > 1 && substr(a, i, 1) == substr(b, j-1, 1) &&
+					    substr(a, i-1, 1) == substr(b, j, 1) && d[i-2, j-2] + 1 < c)
+						c = d[i-2, j-2] + 1
+					d[i, j] = c
+				}
+			return d[la, lb]
+		}
+		{ n = split($0, f, /[][ \t|,()]+/)
+		  for (k = 1; k <= n; k++) if (f[k] ~ /^-[a-z][a-z0-9]*$/) cand[f[k]] = 1 }
+		END {
+			best = ""; bd = (length(w) >= 6 ? 2 : 1) + 1; ties = 0
+			for (o in cand) {
+				if (o == w) continue
+				dd = dist(w, o)
+				if (dd < bd) { bd = dd; best = o; ties = 0 }
+				else if (dd == bd && best != "") ties++
+			}
+			if (best != "" && !ties) printf "; did you mean %s?", best
+		}')" ;;
+	esac
+	echo "$prog: $1" >&2
+	echo "$prog: $prog --help prints the usage" >&2
+	exit 2
+}

@@ -61,8 +61,8 @@ U
 	etchopts_usage
 }
 die() { printf '%s: %s\n' "$prog" "$*" >&2; exit 1; }
-# a usage error: one line, exit 2 (the usage is fem --help)
-bad() { printf '%s: %s; see fem --help\n' "$prog" "$*" >&2; exit 2; }
+# a usage error: one line (and where the usage is), exit 2
+bad() { usage_error "$*"; }
 # a wrong value: one line, exit 2
 badv() { printf '%s: %s\n' "$prog" "$*" >&2; exit 2; }
 say() { [ -n "$quiet" ] || printf '%s: %s\n' "$prog" "$*" >&2; }
@@ -616,10 +616,52 @@ if [ -n "$dryrun" ]; then
 	exit 0
 fi
 
+# The points finished so far: those with their measure.dat.
+points_done() {
+	set +f  # this glob is ours (set -f keeps the options' words from globbing)
+	set -- "$dir"/f*/d*/measure.dat "$dir"/f*/d*/s*/measure.dat
+	set -f
+	_n=0
+	for _m in "$@"; do [ ! -e "$_m" ] || _n=$((_n + 1)); done
+	echo $_n
+}
+# progress_loop: "fem: K/N points" on stderr whenever K changes (polled
+# each second while make runs in the foreground; killed after it), the
+# last K said kept in DIR/.progress.
+progress_loop() {
+	last=-1
+	while :; do
+		k=$(points_done)
+		[ "$k" = "$last" ] || { echo "$prog: $k/$npts points" >&2; echo "$k" >"$dir/.progress"; }
+		last=$k
+		sleep 1
+	done
+}
+progress_pid=""
+progress_stop() {
+	[ -z "$progress_pid" ] || { kill "$progress_pid" 2>/dev/null || :; wait "$progress_pid" 2>/dev/null || :; }
+	progress_pid=""
+}
+# Interrupted (^C, kill): the finished points stay (make wrote each
+# atomically); the same command resumes from them.
+interrupted() {
+	progress_stop
+	rm -f "$dir/.progress"
+	echo "$prog: interrupted after $(points_done)/$npts points; run the same command again to resume" >&2
+	exit 130
+}
+trap interrupted INT TERM HUP
+
 say "$dir: $npts points ($nf foci x $nd doses), make -j $jobs"
+[ -n "$quiet" ] || { progress_loop & progress_pid=$!; }
 st=0
 make -k -s -C "$dir" --no-print-directory -j "$jobs" all || st=$?
+progress_stop
+# the last count, unless the loop said it already
+[ -n "$quiet" ] || [ "$(points_done)" = "$(cat "$dir/.progress" 2>/dev/null)" ] ||
+	echo "$prog: $(points_done)/$npts points" >&2
+rm -f "$dir/.progress"
 [ $st -eq 0 ] || echo "$prog: some points failed (their messages above); collecting the others" >&2
 make -s -C "$dir" --no-print-directory collect || st=1
-[ $st -ne 0 ] || say "$dir/fem.dat, $dir/bossung.ps${target:+, $dir/window.dat, $dir/window.ps}"
+[ $st -ne 0 ] || say "$dir/fem.dat, $dir/bossung.ps${target:+, $dir/window.dat, $dir/window.ps, $dir/region.ps}"
 exit $st

@@ -8,9 +8,10 @@
 #
 # Every option is checked before any stage runs; a failing stage stops the
 # run with its own message, leaving the earlier stages' files:
-# cutline.in (the mask input with the cutline added), cut.2D (intensity
-# along the cut), rval.2D.binary (the 2D rate array), profile.plot and
-# dataplot.ps.  See man/man1/sample2D.1.
+# cut.2D (intensity along the cut; splat's image of the window goes to
+# cutline.cont), rval.2D.binary (the 2D rate array), profile.plot and its
+# picture profile2D.ps (not dataplot.ps, nor image.cont: a sample2D run
+# beside a sample3D one keeps sample3D's files).  See man/man1/sample2D.1.
 set -eu
 
 prog=sample2D
@@ -33,7 +34,7 @@ usage: sample2D -if splat-inputfile -cut x1 y1 x2 y2 -bf bleach-inputfile
 U
 }
 die() { echo "$prog: $*" >&2; exit 1; }
-bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
+bad() { usage_error "$*"; }
 say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 isnum() { case $1 in ''|*[!0-9.eE+-]*) return 1 ;; *) return 0 ;; esac; }
@@ -41,6 +42,10 @@ isnum() { case $1 in ''|*[!0-9.eE+-]*) return 1 ;; *) return 0 ;; esac; }
 # the programs beside this script come first (an uninstalled build tree)
 here=$(cd "$(dirname "$0")" && pwd)
 [ -x "$here/etch2d" ] && PATH="$here:$PATH"
+# usage_error (the two-line usage error with "did you mean"), shared with
+# the other drivers: beside this script
+[ -r "$here/etchopts.sh" ] || { echo "$prog: cannot find etchopts.sh beside $0" >&2; exit 1; }
+. "$here/etchopts.sh"
 
 splat_in="" bleach_in="" cut="" npts=201 etchtime="" printtime="" method=raystring
 e2opts="" plot="" quiet=""
@@ -75,10 +80,12 @@ done
 [ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
 [ -r "$bleach_in" ] || die "$bleach_in: cannot read the bleach input file"
 
-# splat: the mask input with the cutline added (statements add up)
-{ cat "$splat_in"; echo; echo "cutline $cut $npts cut.2D"; } >cutline.in
+# splat reads the mask where it is (a relative gds FILE in it stays
+# relative to its folder, and its errors name it) and writes only this
+# cutline, in place of the input's own
 say "splat $splat_in with the cutline $cut -> cut.2D"
-splat -q cutline.in || die "splat failed; stopping"
+# shellcheck disable=SC2086 # $cut is four numbers on purpose
+splat -q -o cutline.cont -cutline $cut "$npts" cut.2D "$splat_in" || die "splat failed; stopping"
 say "bleach -cutline cut.2D $bleach_in -> rval.2D.binary"
 bleach -cutline $quiet -o rval.2D.binary cut.2D "$bleach_in" || die "bleach failed; stopping"
 say "etch2d -method $method for ${etchtime}s${printtime:+, printing every ${printtime}s} -> profile.plot"
@@ -86,8 +93,8 @@ say "etch2d -method $method for ${etchtime}s${printtime:+, printing every ${prin
 etch2d -et "$etchtime" ${printtime:+-pt "$printtime"} -method "$method" $e2opts \
 	-o profile.plot rval.2D.binary || die "etch2d failed; stopping"
 if [ -n "$plot" ]; then
-	drawplot -e profile.plot </dev/null || die "drawplot failed"
+	drawplot -e -psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
 else
-	say "drawplot profile.plot -> dataplot.ps"
-	drawplot -noplot -e profile.plot </dev/null || die "drawplot failed"
+	say "drawplot profile.plot -> profile2D.ps"
+	drawplot -noplot -e -psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
 fi

@@ -60,7 +60,7 @@ U
 	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
-bad() { echo "$prog: $*" >&2; usage >&2; exit 2; }
+bad() { usage_error "$*"; }
 say() { [ -n "$quiet" ] || echo "$prog: $*" >&2; }
 need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
@@ -133,6 +133,10 @@ if [ -n "$etchtime" ]; then
 		exit 2
 	fi
 fi
+
+# the resist file is read up front (bleach -check): a mistake in it, such
+# as "develop kimm", is reported before splat runs
+[ -z "$bleach_in" ] || bleach -check "$bleach_in" || exit 1
 
 # -accuracy: splat, bleach, etch and measure level after level (etchopts.sh
 # accuracy_loop), in this directory, so that the files left are those of

@@ -20,10 +20,12 @@
 #   table10.1-<method>.plot        every method, 15 and 30 s
 # The numbers (Table 10.1 remade, Table 3.1, Figure 3.3's overshoot) are
 # printed by `make bench` (tests/bench/etch2d.sh).
-# Usage: sh run.sh; needs splat, bleach, etch2d, drawplot on PATH (or
-# run from the build: PATH=build/bin:$PATH).
+# Usage: sh run.sh; runs splat, bleach, etch2d and drawplot from PATH,
+# else from this tree's build.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v etch2d >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 draw() { drawplot -noplot -e "$1" </dev/null >/dev/null && mv dataplot.ps "${1%.plot}.ps"; }

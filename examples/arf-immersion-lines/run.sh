@@ -9,10 +9,12 @@
 # leaves the film nearly uniform and the line does not resolve.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 for pol in te tm; do
 	mkdir -p "$out/$pol" && cd "$out/$pol"
-	sample3D -if "$here/mask-$pol.in" -bf "$here/resist.in" -et 10 -pt 5 -method fmm -h "$@"
+	sample3D -if "$here/mask-$pol.in" -bf "$here/resist.in" -et 10 -pt 5 -method fmm -hidden "$@"
 	if command -v measure >/dev/null 2>&1; then
 		measure -rel 10,50,90 -line 0.045 0 x curves.plot >cd.txt 2>measure.log || true
 		echo "$pol: line width at 10, 50, 90 % of the thickness:" \

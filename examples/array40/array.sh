@@ -8,6 +8,8 @@
 # refuses (tests/bench/large.sh times both engines).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 size=40
 case ${1:-} in [0-9]*) size=$1; shift ;; esac
 out=${OUT:-$here/out}/$size

@@ -10,6 +10,8 @@
 # README's "Calibrate to measured CDs" (also in $OUT/table.txt).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v calib >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 M="-rel 5 -hole 0 0"

@@ -6,6 +6,8 @@
 # refuses, and its CD lies further from the converged one (docs/accuracy.md).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 20 -pt 10 -hidden -cut y 0 -method fmm "$@"

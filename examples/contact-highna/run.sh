@@ -8,6 +8,8 @@
 # mask-vector.in (imaging vector; splat -bf images through the film).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 for d in -0.3 0.3; do
 	mkdir -p "$out/defocus$d" && cd "$out/defocus$d"
@@ -20,7 +22,7 @@ done
 # the same contact by the vector model through the film, focused inside
 mkdir -p "$out/vector" && cd "$out/vector"
 splat -q -defocus -0.3 -bf "$here/resist.in" "$here/mask-vector.in"
-sample3D -cf image.stack -bf "$here/resist.in" -et 60 -deloop -h "$@"
+sample3D -cf image.stack -bf "$here/resist.in" -et 60 -deloop -hidden "$@"
 if command -v measure >/dev/null 2>&1; then
 	measure -rel 5,50,95 -hole 0 0 curves.plot >cd.txt
 fi

@@ -9,6 +9,8 @@
 # Usage: sh run.sh [sample2D options, e.g. -method fmm]; outputs in $OUT (default out/ here).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample2D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 resist=$here/../defect/resist-shipley1470-80.in
 mkdir -p "$out/north-south" "$out/east-west"

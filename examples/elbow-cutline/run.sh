@@ -5,6 +5,8 @@
 # Usage: sh run.sh [sample2D options, e.g. -method string]; outputs in $OUT (default out/ here).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample2D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 sample2D -if "$here/mask.in" -cut 0 0 5 5 -bf "$here/../resists/kodak820-fig22.in" -et 60 -pt 15 "$@"

@@ -8,6 +8,8 @@
 # pockets apart, and gives the holes' mean and 3 sigma (the LCDU).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 20 -pt 20 -method fmm "$@"

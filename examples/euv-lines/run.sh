@@ -7,6 +7,8 @@
 # -ler: LER, LWR, correlation length) and psd.ps, the edges' spectrum.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 splat -q "$here/mask.in"

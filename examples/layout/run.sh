@@ -4,6 +4,8 @@
 # Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 # splat reads sram.gds beside mask.in (a relative gds FILE is relative to the input's folder)

@@ -3,6 +3,8 @@
 # Usage: sh run.sh [sample3D options, e.g. -deloop]; outputs go to $OUT (default: out/ here).
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+# the programs from PATH, else from this tree's build (make at the top of the tree)
+command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 for r in olinhunt6512 shipley1470; do
 	mkdir -p "$out/$r" && cd "$out/$r"

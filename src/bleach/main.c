@@ -24,6 +24,9 @@ static const char usage[] =
 	"usage: bleach [-ascii] [-solid] [-m level] [-o rate-file] [-q] [-dose D] [-seed S] [-nz N]\n"
 	"              [-big] [-threads n] contour-file bleach-inputfile\n"
 	"       bleach -cutline [-ascii] [-o rate-file] [-q] cutline-plot bleach-inputfile\n"
+	"       bleach -check bleach-inputfile\n"
+	"  -check         read and check the bleach input file only (its first problem,\n"
+	"                 or nothing and exit 0), as sample3D does before any stage runs\n"
 	"  -cutline       the first file is a cutline of splat (a 2D plot file): write the\n"
 	"                 2D rate array (ny = 1) over (distance along the cut, z) for etch2d\n"
 	"  -ascii         write the rate array as ASCII rval.3D (default binary rval.3D.binary)\n"
@@ -42,7 +45,7 @@ static const char usage[] =
 static const double DOSE_MAX = 1e6;
 
 struct options {
-	int ascii, solid, quiet, cutline;
+	int ascii, solid, quiet, cutline, check;
 	long threads;
 	long nz;                /* -nz, 0 when not given */
 	double level;
@@ -69,6 +72,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			o->solid = 1;
 		else if (args_flag(&a, "-cutline"))
 			o->cutline = 1;
+		else if (args_flag(&a, "-check"))
+			o->check = 1;
 		else if (args_flag(&a, "-q"))
 			o->quiet = 1;
 		else if (args_flag(&a, "-big"))
@@ -92,7 +97,15 @@ static void parse_options(int argc, char **argv, struct options *o)
 		args_error(&a, "-solid draws a 3D array: not with -cutline");
 	if (o->cutline && o->nz)
 		args_error(&a, "-nz sets the 3D array's grid: not with -cutline");
-	if (!o->contour)
+	if (o->check) {
+		/* the one operand is the input file */
+		if (!o->contour)
+			args_error(&a, "-check: no bleach-inputfile");
+		else if (o->input)
+			args_error(&a, "-check takes the bleach-inputfile alone");
+		o->input = o->contour;
+		o->contour = NULL;
+	} else if (!o->contour)
 		args_error(&a, "no contour-file");
 	else if (!o->input)
 		args_error(&a, "no bleach-inputfile");
@@ -105,6 +118,11 @@ int main(int argc, char **argv)
 	struct options o;
 	parse_options(argc, argv, &o);
 	par_set_threads((int)o.threads);
+	if (o.check) {
+		struct bleach_input in;
+		fmt_bleach_read(o.input, &in);
+		return 0;
+	}
 	if (o.cutline) {
 		cutline_bleach(o.contour, o.input, o.output ? o.output : o.ascii ? "rval.2D" :
 			       "rval.2D.binary", o.ascii, o.quiet);
@@ -115,8 +133,9 @@ int main(int argc, char **argv)
 	 * one-line usage error (sweep scripts read it in a log) */
 	struct bleach_opts b = {o.contour, o.input, o.output, o.ascii, o.solid, o.quiet,
 				o.level, o.dose != NULL, 0, o.seed, (int)o.nz};
-	if (o.dose && (!num_parse(o.dose, &b.dose) || !(b.dose >= 0 && b.dose <= DOSE_MAX)))
-		die_status(EXIT_USAGE, "option -dose: expected a number from 0 to %g, found \"%.40s\"",
+	/* dose 0 exposes nothing: refused, as fem refuses it */
+	if (o.dose && (!num_parse(o.dose, &b.dose) || !(b.dose > 0 && b.dose <= DOSE_MAX)))
+		die_status(EXIT_USAGE, "option -dose: expected a number above 0 up to %g, found \"%.40s\"",
 			   DOSE_MAX, o.dose);
 	bleach_run(&b);
 	return 0;

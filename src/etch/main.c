@@ -295,7 +295,7 @@ static _Noreturn void usage_die(const char *fmt, ...)
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
-	fputs(usage, stderr);
+	args_hint();
 	exit(EXIT_USAGE);
 }
 
@@ -358,6 +358,8 @@ int main(int argc, char **argv)
 	etch_estimate(r, &f, &o);
 	/* curves.plot, its .2D and the cut are committed together (util.h) */
 	aout_defer();
+	/* interrupted, they keep the print times finished (util.h) */
+	aout_keep_on_signal("print times");
 	if (o.method == METHOD_CELL || o.method == METHOD_HUYGENS) {
 		etch_run_cells(&f, &o);
 		aout_finish();

@@ -213,11 +213,12 @@ static void parse_options(int argc, char **argv, struct options *o)
 				break;
 			}
 	parse_accuracy(&a, o, acc);
+	/* the specific problems first: only the first problem is printed */
+	check_whole(&a, o);
 	if (o->holes && o->have_kind)
 		args_error(&a, "give -holes or one of -hole, -space and -line, not both");
 	else if (!o->have_kind && !o->holes)
 		args_error(&a, "give the feature: -hole X Y, -space X Y x|y or -line X Y x|y");
-	check_whole(&a, o);
 	if (!o->input)
 		args_error(&a, "give the surface file (curves.plot of etch)");
 	args_done(&a, NULL);
@@ -236,6 +237,14 @@ enum { CROSS_REPORT_MAX = 1000 };
 static struct surf *load(struct options *o, long *setno)
 {
 	struct plot_file *pf = fmt_plot_read(o->input, 3);
+	if (strcmp(pf->labels.title, fmt_labels_std(LABELS_PAC)->title) == 0) {
+		/* bleach -solid's surface of constant PAC closes the box: its
+		 * "CD" would be 0, a number that means nothing */
+		fmt_plot_free(pf);
+		free(o->h);
+		die("%s:1: this is bleach -solid's surface of constant PAC, not a developed "
+		    "surface: measure etch's curves.plot", o->input);
+	}
 	*setno = o->set ? o->set : pf->nsets;
 	if (*setno > pf->nsets) {
 		int n = pf->nsets;

@@ -24,7 +24,8 @@
 
 static const char usage[] =
 	"usage: splat [-o contour-file] [-q] [-big] [-name] [-defocus d] [-grid nx ny]\n"
-	"             [-method hopkins|abbe|auto] [-bf resist-file] [-threads n] input-file\n"
+	"             [-method hopkins|abbe|auto] [-bf resist-file] [-threads n]\n"
+	"             [-cutline x1 y1 x2 y2 npts file] input-file\n"
 	"  -o contour-file  output image (default: the input's contour statement,\n"
 	"                   else splat.cont)\n"
 	"  -q               quiet: no progress lines on stderr\n"
@@ -41,7 +42,10 @@ static const char usage[] =
 	"                   image stack then passes through\n"
 	"  -threads n       threads to use (default $SAMPLE3D_THREADS, else every core)\n"
 	"  -name            print the name of the contour-file it would write, and\n"
-	"                   exit (for scripts such as sample3D)\n";
+	"                   exit (for scripts such as sample3D)\n"
+	"  -cutline x1 y1 x2 y2 npts file\n"
+	"                   write this cutline in place of the input's cutlines\n"
+	"                   (the cutline statement of splat(5); for sample2D)\n";
 
 struct options {
 	const char *output;
@@ -52,6 +56,7 @@ struct options {
 	const char *method;     /* -method value */
 	const char *bf;         /* -bf resist file */
 	long threads;
+	const char *cut[6];     /* -cutline's words, checked after parsing */
 	const char *input;
 };
 
@@ -97,7 +102,15 @@ static void parse_options(int argc, char **argv, struct options *o)
 			;
 		else if (args_int(&a, "-threads", 1, PAR_MAX_THREADS, &o->threads))
 			;
-		else
+		else if (args_flag(&a, "-cutline")) {
+			if (a.i + 6 > argc) {
+				args_error(&a, "option -cutline needs x1 y1 x2 y2 npts file");
+				a.i = argc;
+			} else {
+				for (int k = 0; k < 6; k++)
+					o->cut[k] = argv[a.i++];
+			}
+		} else
 			args_operand(&a, (const char **[]){&o->input}, 1, "input file");
 	}
 	if (!o->input)
@@ -117,6 +130,34 @@ static double override_value(const char *opt, const char *s, double min, double 
 		die_status(EXIT_USAGE, "option %s: expected a number from %g to %g, found \"%.40s\"",
 			   opt, min, max, s);
 	return v;
+}
+
+/* Largest |coordinate| of a -cutline end and its largest point count:
+ * the bounds of splat(5)'s cutline statement and of any window. */
+static const double CUT_COORD_MAX = 1e6;
+static const double CUT_MAX_PTS = 1000000;
+
+/* -cutline: the one cutline written, in place of the input's. */
+static void replace_cutlines(struct splat_input *in, const char *const w[6])
+{
+	struct splat_cutline c;
+	c.x1 = override_value("-cutline x1", w[0], -CUT_COORD_MAX, CUT_COORD_MAX);
+	c.y1 = override_value("-cutline y1", w[1], -CUT_COORD_MAX, CUT_COORD_MAX);
+	c.x2 = override_value("-cutline x2", w[2], -CUT_COORD_MAX, CUT_COORD_MAX);
+	c.y2 = override_value("-cutline y2", w[3], -CUT_COORD_MAX, CUT_COORD_MAX);
+	double np = override_value("-cutline npts", w[4], 2, CUT_MAX_PTS);
+	if (np != floor(np))
+		die_status(EXIT_USAGE, "option -cutline npts: expected a whole number, found \"%.40s\"",
+			   w[4]);
+	c.npts = (int)np;
+	c.line = 0;
+	c.file = xstrdup(w[5]);
+	for (int k = 0; k < in->ncutlines; k++)
+		free(in->cutlines[k].file);
+	if (!in->ncutlines)
+		in->cutlines = xmalloc(sizeof c);
+	in->cutlines[0] = c;
+	in->ncutlines = 1;
 }
 
 /* A cutline: intensity against distance along the line (thesis Figure
@@ -191,6 +232,8 @@ int main(int argc, char **argv)
 	}
 	struct vfilm vf;
 	vector_film_read(&vf, in, o.input, o.bf);
+	if (o.cut[0])
+		replace_cutlines(in, o.cut);
 	const struct splat_mask *m = &in->mask;
 	const char *out = o.output ? o.output : in->contour;
 	if (o.name_only) {

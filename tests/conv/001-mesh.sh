@@ -72,7 +72,7 @@ if command -v gzip >/dev/null; then
 	same z.3D mesh.expect
 fi
 
-# errors: bad option (usage, exit 2), missing input, malformed input
+# errors: bad option (a pointer to the usage, exit 2), missing input, malformed input
 conv -x g.cont >/dev/null 2>err.txt; [ $? -eq 2 ] || fail "bad option: expected exit 2"
 grep -q usage err.txt || fail "bad option: no usage"
 conv >/dev/null 2>&1; [ $? -eq 2 ] || fail "no input: expected exit 2"

@@ -23,7 +23,7 @@ for b in block[2-9].sh; do
 	(cd "$TOP" && unset T && PATH=/usr/bin:/bin sh -e "$here/twice.sh") >out.txt 2>&1 ||
 		fail "$b failed: $(tail -n 5 out.txt)"
 done
-for f in image.cont rval.3D.binary curves.plot profile.ps cut.ps image.ps profile.plot dataplot.ps \
+for f in image.cont rval.3D.binary curves.plot profile.ps cut.ps image.ps profile.plot profile2D.ps dataplot.ps \
 	fem/fem.dat fem/bossung.ps fem/window.ps; do
 	[ -s "sample3d/$f" ] || fail "the README's drivers left no $f"
 done

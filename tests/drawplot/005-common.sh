@@ -1,7 +1,8 @@
 # The behaviour common to the four plot programs (pdraw, contour,
 # drawplot, drawmask), each run on a small valid input with stdin from
 # /dev/null under a 20 s timeout (nothing may wait for a terminal):
-#   --help exits 0; a bad option gives the problem and the usage, exit 2;
+#   --help exits 0; a bad option gives the problem and a line naming
+#   --help (two lines), exit 2;
 #   dataplot.ps is written, -ps and POSTSCRIPT=OFF suppress it, -svg
 #   writes SVG, -s 0.5 scales the page; without a display, one note;
 #   a bad input leaves an existing dataplot.ps untouched (atomic output);
@@ -29,7 +30,8 @@ for p in pdraw contour drawplot drawmask; do
 	timeout 20 $p -bogus "$in" </dev/null >out.txt 2>err.txt
 	[ $? -eq 2 ] || fail "$p -bogus: expected exit 2"
 	grep -q "^$p: unknown option -bogus" err.txt || fail "$p -bogus: $(head -1 err.txt)"
-	grep -q "^usage: $p" err.txt || fail "$p -bogus: no usage"
+	grep -qx "$p: $p --help prints the usage" err.txt || fail "$p -bogus: no pointer to the usage"
+	[ "$(wc -l <err.txt)" -eq 2 ] || fail "$p -bogus: not two lines: $(cat err.txt)"
 	timeout 20 $p "$in" </dev/null >out.txt 2>err.txt || fail "$p $in: $(cat err.txt)"
 	[ -s dataplot.ps ] || fail "$p wrote no dataplot.ps"
 	gs_check dataplot.ps

@@ -23,13 +23,15 @@ runtime_error() {
 	[ "$(wc -l <err.txt)" -eq 1 ] || fail "$*: not one line: $(head -c 300 err.txt)"
 	grep -q "^etch: " err.txt || fail "$*: message not 'etch: ...'"
 }
-# usage errors: status 2, the problem on the first line, then the usage
+# usage errors: status 2, the problem on the first line, then one line
+# saying where the usage is (two lines in all)
 usage_error() {
 	"$@" </dev/null >/dev/null 2>err.txt
 	st=$?
 	[ $st -eq 2 ] || fail "$*: status $st, expected 2: $(head -c 300 err.txt)"
+	[ "$(wc -l <err.txt)" -eq 2 ] || fail "$*: not two lines: $(head -c 300 err.txt)"
 	head -n 1 err.txt | grep -q "^etch: " || fail "$*: first line not 'etch: ...'"
-	grep -q "^usage: etch" err.txt || fail "$*: no usage printed"
+	grep -qx "etch: etch --help prints the usage" err.txt || fail "$*: no pointer to the usage"
 }
 usage_error etch rate.bin
 usage_error etch -et 1 -bogus rate.bin

@@ -19,7 +19,7 @@ $MKRATE -o r3.bin 5 5 5 -1 1 -1 1 -1 0 1 || fail "mkrate 3D"
 "$BUILD/tests/lib/fmtcat" rate r2.txt back.bin || fail "2D ASCII rate file does not read back"
 cmp -s back.bin r2.bin || fail "2D rate: ASCII -> binary differs from the binary written directly"
 
-# usage errors: status 2, the first line "etch2d: ...", then the usage
+# usage errors: status 2, the first line "etch2d: ..."
 usage_error() {
 	"$@" </dev/null >/dev/null 2>err.txt
 	st=$?

@@ -2,7 +2,7 @@
 # cutlines and examples/elbow-cutline (sample2D: splat, bleach -cutline,
 # etch2d, drawplot) leave in every run directory cut.2D, rval.2D.binary,
 # a profile.plot with one set per print time of the run's own command
-# (4: -et 20 -pt 5 and -et 60 -pt 15) and a dataplot.ps with as many
+# (4: -et 20 -pt 5 and -et 60 -pt 15) and a profile2D.ps with as many
 # pages; examples/algorithms leaves every plot file its run.sh lists, each
 # drawn.  Against: the files sample2D(1) and the run.sh comments promise.
 # Figure 9.5's point, against the thesis' text (9.2.2): at the defect's
@@ -24,12 +24,12 @@ for name in defect-cutlines elbow-cutline algorithms; do
 		fail "example $name failed: $(tail -n 3 "$name.log")"
 done
 for d in defect-cutlines/north-south defect-cutlines/east-west elbow-cutline; do
-	for f in cut.2D rval.2D.binary profile.plot dataplot.ps; do
+	for f in cut.2D rval.2D.binary profile.plot profile2D.ps; do
 		[ -s "$d/$f" ] || fail "$d: no $f"
 	done
 	sets=$(($(grep -c '^$' "$d/profile.plot") + 1))
 	[ "$sets" -eq 4 ] || fail "$d: $sets sets, want 4"
-	pages=$(grep -c '^%%Page: ' "$d/dataplot.ps")
+	pages=$(grep -c '^%%Page: ' "$d/profile2D.ps")
 	[ "$pages" -eq 4 ] || fail "$d: $pages pages, want 4"
 done
 ZAT=$TOP/tests/lib/zat.awk

@@ -1,4 +1,5 @@
-# measure's bad input: a usage error exits 2 with the usage; a run-time
+# measure's bad input: a usage error exits 2 with the first problem and a
+# line naming --help (the usage itself when there is no argument); a run-time
 # error (no set of that number, a height outside the resist, a point
 # outside the box, a malformed surface) prints one line "measure: ..."
 # and exits 1, leaving no output file behind.
@@ -10,7 +11,7 @@ grep -q '^usage: measure' help.txt || fail "--help prints no usage"
 measure -h >help2.txt || fail "-h exits non-zero"
 same help.txt help2.txt
 
-# usage errors: exit 2, every problem reported
+# usage errors: exit 2, the first problem reported, then the pointer to --help
 for args in "" "-hole 0 0 s.plot" "-at -0.3 s.plot" "-at -0.3 -rel 50 -hole 0 0 s.plot" \
 	"-at a,b -hole 0 0 s.plot" "-at -0.3, -hole 0 0 s.plot" "-rel 120 -hole 0 0 s.plot" \
 	"-at -0.3 -hole 0 s.plot" "-at -0.3 -space 0 0 z s.plot" "-at -0.3 -hole 0 0 -line 0 0 x s.plot" \
@@ -19,7 +20,12 @@ for args in "" "-hole 0 0 s.plot" "-at -0.3 s.plot" "-at -0.3 -rel 50 -hole 0 0 
 	measure $args >out.txt 2>err.txt </dev/null
 	st=$?
 	[ $st -eq 2 ] || fail "measure $args: exit $st, expected 2: $(cat err.txt)"
-	grep -q '^usage: measure' err.txt || fail "measure $args: no usage on stderr"
+	if [ -z "$args" ]; then
+		grep -q '^usage: measure' err.txt || fail "measure alone: no usage on stderr"
+		continue
+	fi
+	[ "$(wc -l <err.txt)" -eq 2 ] || fail "measure $args: not two lines: $(cat err.txt)"
+	grep -qx 'measure: measure --help prints the usage' err.txt || fail "measure $args: no pointer to the usage"
 	grep -q '^measure: ' err.txt || fail "measure $args: no message on stderr"
 done
 

@@ -1,5 +1,5 @@
 # measure -ler, -psd, -lcdu and -holes on bad input: a usage error exits 2
-# with the usage and a message (-ler without -space or -line, -lcdu
+# with a message and a line naming --help (-ler without -space or -line, -lcdu
 # without -holes, -psd without -ler, two heights, -holes with a single
 # feature or -plot); a feature whose edges cannot be followed (it reaches
 # the box edge, it is absent at the point, it ends between lines) is one
@@ -19,7 +19,7 @@ for args in "-rel 50 -ler -hole 0 0 l.plot" "-rel 50 -ler l.plot" "-rel 50 -lcdu
 	measure $args >out.txt 2>err.txt </dev/null
 	st=$?
 	[ $st -eq 2 ] || fail "measure $args: exit $st, expected 2: $(cat err.txt)"
-	grep -q '^usage: measure' err.txt || fail "measure $args: no usage on stderr"
+	grep -qx 'measure: measure --help prints the usage' err.txt || fail "measure $args: no pointer to the usage"
 	grep -q '^measure: ' err.txt || fail "measure $args: no message on stderr"
 done
 measure -rel 50 -ler l.plot 2>err.txt

@@ -3,8 +3,8 @@
 # the walk-through kept only its last picture): for drawmask, contour,
 # drawplot and pdraw, "-psfile NAME" writes NAME byte-identical to the
 # dataplot.ps the same command writes without it, and leaves an existing
-# dataplot.ps untouched; an empty name is a usage error (exit 2, the reason on the first line, then
-# the usage).
+# dataplot.ps untouched; an empty name is a usage error (exit 2, the reason on the first line, then a
+# line naming --help).
 . "$TOP/tests/lib/common.sh"
 E=$TOP/examples/contact
 printf '0 1 0 1\n1\n3\n0 0\n0.5 1\n1 0.25\n' >line.2D

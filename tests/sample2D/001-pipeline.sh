@@ -1,9 +1,9 @@
 #!/bin/sh
 # sample2D: the 2D pipeline along a cutline.  Checks: usage errors (a
 # missing -cut, a bad number, an unknown method) exit 2 before any stage
-# runs (no cutline.in); an unreadable input exits 1; a run on a 1 um clear
+# runs (no cut.2D); an unreadable input exits 1; a run on a 1 um clear
 # space leaves cut.2D, rval.2D.binary (a 2D array etch2d reads and etch
-# refuses), profile.plot with one set per print time and dataplot.ps; the
+# refuses), profile.plot with one set per print time and profile2D.ps; the
 # space develops deeper at its centre than under the dark field (the
 # profile's lowest point lies within the space, 1.5 to 2.5 um along the
 # cut, and the resist 0.5 um along the cut is still at the top);
@@ -31,12 +31,12 @@ usage2() { "$@" >/dev/null 2>err.txt; st=$?; [ $st -eq 2 ] || fail "$*: exit $st
 usage2 sample2D -if mask.in -bf resist.in -et 10
 usage2 sample2D -if mask.in -cut 0 x 1 1 -bf resist.in -et 10
 usage2 sample2D -if mask.in -cut -2 0 2 0 -bf resist.in -et 10 -method nosuch
-[ -e cutline.in ] && fail "a usage error ran a stage"
+[ -e cut.2D ] && fail "a usage error ran a stage"
 sample2D -if nosuch.in -cut -2 0 2 0 -bf resist.in -et 10 >/dev/null 2>err.txt &&
 	fail "an unreadable mask did not fail"
 sample2D -q -if mask.in -cut -2 0 2 0 -npts 41 -bf resist.in -et 20 -pt 10 ||
 	fail "sample2D failed: $(cat err.txt)"
-for f in cut.2D rval.2D.binary profile.plot dataplot.ps; do [ -s $f ] || fail "no $f"; done
+for f in cut.2D rval.2D.binary profile.plot profile2D.ps; do [ -s $f ] || fail "no $f"; done
 n=$(grep -c '^0 4 -0.5 0$' profile.plot)
 [ "$n" -eq 2 ] || fail "profile.plot has $n sets with the section's bounds, want 2"
 etch -et 1 rval.2D.binary >/dev/null 2>&1 && fail "etch accepted the 2D array"

@@ -4,8 +4,9 @@
 # profile's faces are filled with paper white, the thesis' hidden-line
 # mesh, where the default shades them in many greys); -h and --help print
 # the usage and exit 0; etch options pass through;
-# a failing stage stops the run with its own message and a non-zero exit
-# and leaves the earlier outputs; usage errors exit 2.  Checked against
+# a broken resist file is reported before any stage runs; a failing stage
+# stops the run with its own message and a non-zero exit and leaves the
+# earlier outputs; usage errors exit 2.  Checked against
 # the files each stage must (and must not) leave in the directory.
 . "$TOP/tests/lib/common.sh"
 E=$TOP/examples/contact
@@ -55,13 +56,21 @@ same profile.ps dataplot.ps
 grep -q '(developed resist, t = 5 s)' profile.ps || fail "profile.ps does not title its page with the print time"
 grep -q '(t = 5 s)' cut.ps || fail "cut.ps has no legend of print times"
 
-# a failing stage: a broken bleach input stops before etch, keeps splat's image
+# a broken bleach input is found before any stage runs (bleach -check)
 mkdir c && cd c
 printf 'wavelength 0.436\nbogus\n' >bad.in
 sample3D -q -if ../mask.in -bf bad.in -et 10 >/dev/null 2>err.txt
 st=$?
-[ $st -ne 0 ] || fail "a failing bleach should stop the run"
+[ $st -ne 0 ] || fail "a broken bleach input should stop the run"
 grep -q '^bleach: bad.in:2: ' err.txt || fail "bleach's own message not shown: $(cat err.txt)"
+[ ! -e img.cont ] || fail "splat ran before the bleach input was checked"
+# a failing stage (bleach's work beyond the limits) stops before etch,
+# keeps splat's image
+{ grep -v '^grid' "$E/resist.in"; echo 'grid nx 3000 ny 3000 nz 3000'; } >big.in
+sample3D -q -if ../mask.in -bf big.in -et 10 >/dev/null 2>err.txt
+st=$?
+[ $st -ne 0 ] || fail "a failing bleach should stop the run"
+grep -q '^bleach: big.in:[0-9]*: .*beyond the limits' err.txt || fail "bleach's own message not shown: $(cat err.txt)"
 [ -s img.cont ] || fail "splat's output should stay"
 [ ! -e curves.plot ] || fail "etch ran after bleach failed"
 cd ..

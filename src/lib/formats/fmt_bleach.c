@@ -475,6 +475,8 @@ static void statement(struct parser *p, char **t, int nt)
 		once(p, S_DOSE, "dose");
 		nargs(p, t, nt, 1, 1, kw);
 		in->dose = number(p, t[1], "dose (mJ/cm2)", 0, BIG_DOSE);
+		if (in->dose == 0)      /* nothing exposed: no pattern to develop */
+			lex_error(p->lx, "dose 0: nothing is exposed; give a dose in mJ/cm2 above 0");
 		in->line_dose = lex_lineno(p->lx);
 	} else if (strcasecmp(kw, "bake") == 0 || strcasecmp(kw, "bake3d") == 0) {
 		once(p, S_BAKE, "bake");
@@ -583,8 +585,9 @@ static void parse(struct lex *lx, struct bleach_input *in)
 			    "thicknesses", lex_name(lx), p.seen[S_PEB], L);
 	}
 	if (in->diffusion > 10 * in->thick && in->bake != BAKE_NONE)
-		die("%s:%ld: bake diffusion length above ten resist thicknesses",
-		    lex_name(lx), p.seen[S_BAKE]);
+		die("%s:%ld: bake diffusion length %g um is above ten resist thicknesses "
+		    "(lengths are in micrometres: %g nm is %g)", lex_name(lx), p.seen[S_BAKE],
+		    in->diffusion, in->diffusion, in->diffusion / 1000);
 	if (in->nz == 0)
 		in->nz = fmt_bleach_default_nz(in);
 	/* the standing waves must be sampled (two points a period at least):
@@ -614,6 +617,7 @@ int fmt_bleach_default_nz(const struct bleach_input *in)
 void fmt_bleach_read(const char *path, struct bleach_input *in)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, "bleach(5)");
 	parse(lx, in);
 	lex_close(lx);
 }

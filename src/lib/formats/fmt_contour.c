@@ -102,6 +102,7 @@ struct contour *fmt_contour_parse(struct lex *lx, const char *first, int old)
 struct contour *fmt_contour_read(const char *path, int old)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, "contour(5)");
 	struct plot_labels lab;
 	fmt_labels_read(lx, &lab, 1);
 	const char *t = lex_token(lx);

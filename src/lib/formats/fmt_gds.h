@@ -34,6 +34,10 @@ struct gds_lib;         /* opaque */
  * (may be NULL) names who asked, e.g. "mask.in:4". */
 struct gds_lib *fmt_gds_read(const char *path, const char *ctx);
 void fmt_gds_free(struct gds_lib *g);
+/* 1 if some shape of the library (any cell) is on layer/datatype
+ * (datatype -1: any); writes the library's layer/datatype pairs of shapes
+ * into buf ("1/0, 2/0, 63/0"), for the message of a layer not there. */
+int fmt_gds_layer_list(const struct gds_lib *g, int layer, int datatype, char *buf, size_t n);
 
 /* Micrometres per database unit. */
 double fmt_gds_um_per_dbu(const struct gds_lib *g);

@@ -402,6 +402,52 @@ static void check_counts(struct flat *f, int top)
 			n[2], g->max_visit);
 }
 
+/* The names of the library's cells, "A, B, C" (cut short with "..."),
+ * for the message of a cell that is not there. */
+static void cell_names(const struct gds_lib *g, char *buf, size_t n)
+{
+	size_t ll = 0;
+	buf[0] = '\0';
+	for (int i = 0; i < g->nc && ll < n - 80; i++)
+		ll += (size_t)snprintf(buf + ll, n - ll, "%s%.60s", i ? ", " : "", g->c[i].name);
+	if (ll >= n - 80 && g->nc)
+		snprintf(buf + ll, n - ll, ", ...");
+}
+
+/* Most distinct layer/datatype pairs listed by fmt_gds_layer_list. */
+enum { GDS_LIST_PAIRS = 40 };
+
+static int is_shape(const struct elem *e)
+{
+	return e->kind == R_BOUNDARY || e->kind == R_BOX || e->kind == R_PATH;
+}
+
+int fmt_gds_layer_list(const struct gds_lib *g, int layer, int datatype, char *buf, size_t n)
+{
+	buf[0] = '\0';
+	for (size_t i = 0; i < g->ne; i++)
+		if (is_shape(&g->e[i]) && g->e[i].layer == layer &&
+		    (datatype < 0 || g->e[i].datatype == datatype))
+			return 1;
+	/* not there: the distinct pairs, in file order (one pass, against
+	 * the few already listed) */
+	int pl[GDS_LIST_PAIRS], pd[GDS_LIST_PAIRS], np = 0;
+	size_t ll = 0;
+	for (size_t i = 0; i < g->ne && np < GDS_LIST_PAIRS; i++) {
+		const struct elem *e = &g->e[i];
+		int seen = !is_shape(e);
+		for (int k = 0; k < np && !seen; k++)
+			seen = pl[k] == e->layer && pd[k] == e->datatype;
+		if (seen || ll >= n - 40)
+			continue;
+		pl[np] = e->layer;
+		pd[np] = e->datatype;
+		ll += (size_t)snprintf(buf + ll, n - ll, "%s%d/%d", np++ ? ", " : "", e->layer,
+				       e->datatype);
+	}
+	return 0;
+}
+
 static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
 		   const double *win, struct poly_set *out);
 
@@ -441,8 +487,11 @@ static long shapes(struct gds_lib *g, const char *cell, int layer, int datatype,
 	int top = -1;
 	if (cell) {
 		top = gds_find_cell(g, cell, strlen(cell));
-		if (top < 0)
-			gds_die(g, 0, "no cell named \"%.60s\"", cell);
+		if (top < 0) {
+			char names[400];
+			cell_names(g, names, sizeof names);
+			gds_die(g, 0, "no cell named \"%.60s\"; its cells: %s", cell, names);
+		}
 	} else {
 		char list[400];
 		size_t ll = 0;

@@ -125,6 +125,7 @@ int fmt_plot_size(const char *path, double *text, double *numbers)
 struct plot_file *fmt_plot_read(const char *path, int dim)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, dim == 3 ? "plot3d(5)" : "plot2d(5)");
 	struct plot_file *pf = fmt_plot_new(dim);
 	fmt_labels_read(lx, &pf->labels, dim == 3);
 	if (lex_at_end(lx))
@@ -223,6 +224,8 @@ void fmt_plot_begin_set(struct plot_writer *w, const double *bounds, long ncurve
 {
 	check_set_done(w);
 	if (w->nsets)
+		aout_mark(w->a, w->nsets);      /* the sets so far are whole */
+	if (w->nsets)
 		fputc('\n', w->a->f);
 	num_print_row(w->a->f, bounds, 2 * w->dim);
 	fprintf(w->a->f, "%ld\n", ncurves);
@@ -299,6 +302,7 @@ void fmt_plot_curves(struct plot_writer *w, size_t n, int npts,
 void fmt_plot_close(struct plot_writer *w)
 {
 	check_set_done(w);
+	aout_mark(w->a, w->nsets);
 	aout_commit(w->a);
 	free(w->path);
 	free(w);

@@ -453,6 +453,7 @@ struct ratefile *fmt_rate_read_arrays(const char *path, const char *const *want)
 		free(buf);
 	} else {
 		struct lex *lx = lex_from_memory(name, buf, len);
+		lex_expect(lx, "rval(5)");
 		free(buf);
 		r = read_ascii(lx);
 		lex_close(lx);

@@ -46,6 +46,11 @@ static void in_range(struct lex *lx, const char *kw, double v, double lo, double
 	lex_error(lx, "%s %g is outside [%g, %g] %s", kw, v, lo, hi, unit);
 }
 
+/* A rect this many window widths away is taken for nanometres written as
+ * micrometres (a 0.5 um feature as 500 in a 5 um window), and the message
+ * says so. */
+static const double NM_HINT = 50;
+
 /* Slack when checking that a rect lies inside the window, relative to
  * the window size: inputs written with a few decimals must pass. */
 static const double WINDOW_SLACK = 1e-9;
@@ -292,6 +297,15 @@ static void finish_layers(struct lex *lx, struct splat_input *in)
 			fmt_gds_free(g);
 			g = fmt_gds_read(l->gds_file, ctx);
 			gpath = l->gds_file;
+		}
+		char layers[300];
+		if (!fmt_gds_layer_list(g, l->layer, l->datatype, layers, sizeof layers)) {
+			char want[32];
+			snprintf(want, sizeof want, l->datatype < 0 ? "%d" : "%d/%d", l->layer,
+				 l->datatype);
+			fmt_gds_free(g);
+			die("%s:%ld: gds: %s has no shape on layer %s; its layers: %s", lex_name(lx),
+			    l->line, l->gds_file, want, layers[0] ? layers : "none");
 		}
 		double win[4] = {m->xmin, m->xmax, m->ymin, m->ymax};
 		fmt_gds_shapes(g, l->cell, l->layer, l->datatype,
@@ -631,6 +645,7 @@ static int output_statement(struct reader *rd, const char *kw, char **tok, int n
 struct splat_input *fmt_splat_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, "splat(5)");
 	struct splat_input *in = xcalloc(1, sizeof *in);
 	struct reader r = {lx, in, 0, 0, 0, 0, 0, 0, 0};
 	in->wavelength = 0.436;
@@ -678,8 +693,13 @@ struct splat_input *fmt_splat_read(const char *path)
 		const struct splat_rect *rc = &m->rects[i];
 		if (rc->x1 < m->xmin - sx || rc->x2 > m->xmax + sx ||
 		    rc->y1 < m->ymin - sy || rc->y2 > m->ymax + sy)
-			die("%s:%ld: rect is outside the window of line %ld",
-			    lex_name(lx), rc->line, r.window_line);
+			die("%s:%ld: rect is outside the window of line %ld%s",
+			    lex_name(lx), rc->line, r.window_line,
+			    /* a rect of whole hundreds in a window of a few um:
+			     * nanometres for micrometres */
+			    fmax(fmax(fabs(rc->x1), fabs(rc->x2)), fmax(fabs(rc->y1), fabs(rc->y2))) >=
+					    NM_HINT * fmax(m->xmax - m->xmin, m->ymax - m->ymin)
+				    ? " (lengths are in micrometres, not nanometres)" : "");
 	}
 	/* an image stack holds planes * nx * ny values: bound it as one grid */
 	if (in->planes &&

@@ -114,6 +114,7 @@ static void grid_text(char *buf, size_t n, const struct contour *c)
 struct image_stack *fmt_stack_read(const char *path)
 {
 	struct lex *lx = lex_open(path);
+	lex_expect(lx, "stack(5) or contour(5)");
 	struct plot_labels lab;         /* a plain contour-file's (contour.5) */
 	fmt_labels_read(lx, &lab, 1);
 	const char *t = lex_token(lx);

@@ -9,6 +9,7 @@
  */
 #include "lex.h"
 #include "budget.h"
+#include "fmt_kind.h"
 #include "num.h"
 #include "util.h"
 
@@ -38,6 +39,7 @@ struct lex {
 	size_t lcap;
 	char *lbuf;
 	size_t lbufcap;
+	const char *expect;     /* lex_expect's pages, or NULL */
 };
 
 static int ends_with(const char *s, const char *suffix)
@@ -260,8 +262,19 @@ void lex_close(struct lex *lx)
 const char *lex_name(const struct lex *lx) { return lx->name; }
 long lex_lineno(const struct lex *lx) { return lx->line; }
 
+void lex_expect(struct lex *lx, const char *pages)
+{
+	lx->expect = pages;
+}
+
 void lex_error(const struct lex *lx, const char *fmt, ...)
 {
+	if (lx->expect) {
+		const struct fmt_kind *k = fmt_kind_of(lx->buf, lx->len);
+		if (k && !strstr(lx->expect, k->page))
+			die("%s:1: this is %s (%s); %s reads %s", lx->name, k->what, k->page,
+			    util_prog(), lx->expect);
+	}
 	char msg[512];
 	va_list ap;
 	va_start(ap, fmt);

@@ -69,6 +69,13 @@ int lex_line(struct lex *lx, char ***tokens, const int **quoted);
  * consumed.  For the comment lines a numeric format allows at its head. */
 const char *lex_comment(struct lex *lx);
 
+/* Names the manual pages of the kinds the reader takes ("plot3d(5)",
+ * "stack(5) or contour(5)"): lex_error then first checks the kind of the
+ * input from its first bytes (fmt_kind.h), and when the input is of
+ * another kind says so instead, "prog: file:1: this is a rate file
+ * (rval(5)); prog reads plot3d(5)". */
+void lex_expect(struct lex *lx, const char *pages);
+
 /* Dies with "prog: file:line: message" at the current line. */
 _Noreturn void lex_error(const struct lex *lx, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));

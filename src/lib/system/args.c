@@ -15,6 +15,7 @@ void args_init(struct args *a, int argc, char **argv)
 	a->i = 1;
 	a->bad = 0;
 	a->usage[0] = a->usage[1] = a->usage[2] = NULL;
+	a->nknown = 0;
 	util_setprog(argv[0]);
 }
 
@@ -59,17 +60,31 @@ void args_operand(struct args *a, const char **slots[], int n, const char *name)
 
 void args_error(struct args *a, const char *fmt, ...)
 {
+	/* only the first problem is printed: the later ones are often its
+	 * echo (a misspelled option's value taken for one operand too many) */
+	if (a->bad++)
+		return;
 	va_list ap;
 	fprintf(stderr, "%s: ", util_prog());
 	va_start(ap, fmt);
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
-	a->bad++;
+}
+
+/* Remembers opt as an option the program knows (for "did you mean"). */
+static void know(struct args *a, const char *opt)
+{
+	for (int k = 0; k < a->nknown; k++)
+		if (a->known[k] == opt || strcmp(a->known[k], opt) == 0)
+			return;
+	if (a->nknown < ARGS_KNOWN_MAX)
+		a->known[a->nknown++] = opt;
 }
 
 int args_flag(struct args *a, const char *opt)
 {
+	know(a, opt);
 	if (a->i < a->argc && strcmp(a->argv[a->i], opt) == 0) {
 		a->i++;
 		return 1;
@@ -84,6 +99,7 @@ int args_help(struct args *a)
 
 int args_str(struct args *a, const char *opt, const char **val)
 {
+	know(a, opt);
 	if (a->i >= a->argc || strcmp(a->argv[a->i], opt) != 0)
 		return 0;
 	if (a->i + 1 >= a->argc) {
@@ -128,19 +144,119 @@ int args_int(struct args *a, const char *opt, long min, long max, long *val)
 	return 1;
 }
 
+/* Longest option name compared by args_nearest; longer words are no
+ * option of ours and are not suggested for. */
+enum { NEAR_LEN = 40 };
+
+/* Edit distance of a and b (Damerau's: insertion, deletion, substitution
+ * and the swap of two neighbours cost 1 each), both at most NEAR_LEN. */
+static int edit_distance(const char *a, const char *b)
+{
+	int la = (int)strlen(a), lb = (int)strlen(b);
+	int d[NEAR_LEN + 1][NEAR_LEN + 1];
+	for (int i = 0; i <= la; i++)
+		d[i][0] = i;
+	for (int j = 0; j <= lb; j++)
+		d[0][j] = j;
+	for (int i = 1; i <= la; i++)
+		for (int j = 1; j <= lb; j++) {
+			int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+			if (d[i - 1][j] + 1 < c)
+				c = d[i - 1][j] + 1;
+			if (d[i][j - 1] + 1 < c)
+				c = d[i][j - 1] + 1;
+			if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+			    d[i - 2][j - 2] + 1 < c)
+				c = d[i - 2][j - 2] + 1;
+			d[i][j] = c;
+		}
+	return d[la][lb];
+}
+
+const char *args_nearest(const char *word, const char *const cand[], int n)
+{
+	size_t lw = strlen(word);
+	if (lw > NEAR_LEN)
+		return NULL;
+	/* a slip: one edit in a short name, two in one of 6 letters or more
+	 * (-delop, -deloopp, -mehtod); more would suggest unrelated words */
+	int limit = lw >= 6 ? 2 : 1;
+	const char *best = NULL;
+	int bestd = limit + 1, ties = 0;
+	for (int k = 0; k < n; k++) {
+		if (strlen(cand[k]) > NEAR_LEN || strcmp(cand[k], word) == 0)
+			continue;
+		int dk = edit_distance(word, cand[k]);
+		if (dk < bestd) {
+			bestd = dk;
+			best = cand[k];
+			ties = 0;
+		} else if (dk == bestd && best && strcmp(cand[k], best) != 0) {
+			ties++;
+		}
+	}
+	return best && !ties ? best : NULL;
+}
+
+/* Adds the options the usage text names (words "-x..." after a blank or
+ * '[') to the known ones: options a program tests by hand count too. */
+static void know_usage(struct args *a, char names[][NEAR_LEN + 1], int max)
+{
+	int n = 0;
+	for (int k = 0; k < 3; k++)
+		for (const char *s = a->usage[k]; s && *s; s++) {
+			if (s[0] != '-' || !(s[1] >= 'a' && s[1] <= 'z'))
+				continue;
+			if (s != a->usage[k] && s[-1] != ' ' && s[-1] != '[' && s[-1] != '|' &&
+			    s[-1] != '\t' && s[-1] != '(')
+				continue;
+			size_t len = 1;
+			while (len < NEAR_LEN && (s[len] == '-' || (s[len] >= 'a' && s[len] <= 'z') ||
+						  (s[len] >= '0' && s[len] <= '9')))
+				len++;
+			if (n < max) {
+				memcpy(names[n], s, len);
+				names[n][len] = '\0';
+				know(a, names[n++]);
+			}
+			s += len - 1;
+		}
+}
+
 void args_unknown(struct args *a)
 {
-	args_error(a, "unknown option %.60s", a->argv[a->i]);
+	const char *word = a->argv[a->i];
+	if (!a->bad) {
+		static char names[ARGS_KNOWN_MAX][NEAR_LEN + 1];
+		know_usage(a, names, ARGS_KNOWN_MAX);
+		const char *near = args_nearest(word, a->known, a->nknown);
+		if (near)
+			args_error(a, "unknown option %.60s; did you mean %s?", word, near);
+		else
+			args_error(a, "unknown option %.60s", word);
+	} else {
+		a->bad++;
+	}
 	a->i++;
 }
 
 void args_done(struct args *a, const char *usage)
 {
-	if (a->bad) {
+	if (!a->bad)
+		return;
+	if (a->argc <= 1) {
+		/* nothing was asked: the usage is what is wanted */
 		if (usage)
 			fputs(usage, stderr);
 		else
 			print_usage(a, stderr);
-		exit(EXIT_USAGE);
+	} else {
+		args_hint();
 	}
+	exit(EXIT_USAGE);
+}
+
+void args_hint(void)
+{
+	fprintf(stderr, "%s: %s --help prints the usage\n", util_prog(), util_prog());
 }

@@ -1,11 +1,17 @@
 /*
  * args.h - the small command-line helper every program uses.  The thesis'
  * programs take single-dash words (-et 30, -noplot), so getopt does not
- * fit.  Every bad option is reported, not only the first; then usage is
- * printed and the program exits with status 2.
+ * fit.  The first bad option is reported in one line (an unknown option
+ * with the nearest known one, "did you mean -deloop?"), then one line
+ * saying where the usage is, and the program exits with status 2; later
+ * problems, often only the echo of the first (the value of a misspelled
+ * option taken for an operand), are not printed.  With no arguments at
+ * all, the usage itself is printed.
  */
 #ifndef S3D_ARGS_H
 #define S3D_ARGS_H
+
+enum { ARGS_KNOWN_MAX = 192 };
 
 struct args {
 	int argc;
@@ -13,6 +19,10 @@ struct args {
 	int i;          /* index of the option being looked at */
 	int bad;        /* errors reported so far */
 	const char *usage[3];   /* the usage text, in parts (args_usage) */
+	/* the options the program's loop has asked about (args_flag,
+	 * args_str, ...), the candidates of "did you mean" */
+	const char *known[ARGS_KNOWN_MAX];
+	int nknown;
 };
 
 void args_init(struct args *a, int argc, char **argv);
@@ -37,15 +47,26 @@ int args_str(struct args *a, const char *opt, const char **val);
 int args_num(struct args *a, const char *opt, double min, double max, double *val);
 /* The same with a whole number in [min, max]. */
 int args_int(struct args *a, const char *opt, long min, long max, long *val);
-/* Reports "prog: unknown option X" for argv[i] and skips it. */
+/* Reports "prog: unknown option X" for argv[i] and skips it, with
+ * "; did you mean -Y?" when one known option (asked about by the loop or
+ * named in the usage text) is within a small edit distance of X. */
 void args_unknown(struct args *a);
 /* Reports a usage problem (counts as bad). */
 void args_error(struct args *a, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
-/* If any error was reported: prints the usage (usage, or if NULL the
- * text of args_usage) to stderr and exits 2. */
+/* If any error was reported: prints one line naming --help (or, when the
+ * command line was empty, the usage itself: usage, or if NULL the text of
+ * args_usage) to stderr and exits 2. */
 void args_done(struct args *a, const char *usage);
+/* Prints "prog: prog --help prints the usage" on stderr: the second line
+ * of a usage error (args_done prints it too). */
+void args_hint(void);
 /* 1 if argv[i] is -h or --help (consumed). */
 int args_help(struct args *a);
+/* The option among the n names in cand[] nearest to word by edit
+ * distance (insertions, deletions, substitutions, swaps of neighbours),
+ * if it is near enough to be a slip of the keyboard (see args.c), else
+ * NULL. */
+const char *args_nearest(const char *word, const char *const cand[], int n);
 
 #endif

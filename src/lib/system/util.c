@@ -34,8 +34,68 @@ static int npend;
 static const int catch_sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 enum { NCATCH = sizeof catch_sigs / sizeof catch_sigs[0] };
 
+/* aout_keep_on_signal: what the marked units are ("print times"), NULL
+ * when an interrupted output is removed whole; per temporary, its target
+ * and the length and unit count of its last aout_mark. */
+static const char *volatile keep_what;
+static char *volatile keep_path[MAX_TEMPS];
+static volatile off_t keep_len[MAX_TEMPS];
+static volatile long keep_units[MAX_TEMPS];
+
+/* write(2) of a string and of a count, for the signal handler (no stdio) */
+static void put_s(const char *s)
+{
+	ssize_t r = write(2, s, strlen(s));
+	(void)r;
+}
+
+static void put_l(long v)
+{
+	char b[24];
+	int n = (int)sizeof b;
+	do
+		b[--n] = (char)('0' + v % 10);
+	while ((v /= 10) > 0 && n > 0);
+	ssize_t r = write(2, b + n, sizeof b - (size_t)n);
+	(void)r;
+}
+
+/* The kept outputs of an interrupted run (aout_keep_on_signal): each
+ * marked temporary is cut back to its last mark and renamed over its
+ * target, and one line says so.  Only async-signal-safe calls. */
+static void keep_marked(void)
+{
+	int first = -1;
+	mode_t m = umask(0);
+	umask(m);
+	for (int i = 0; i < MAX_TEMPS; i++)
+		if (temps[i] && keep_path[i] && keep_units[i] > 0 &&
+		    truncate(temps[i], keep_len[i]) == 0 && chmod(temps[i], 0666 & ~m) == 0 &&
+		    rename(temps[i], keep_path[i]) == 0) {
+			temps[i] = NULL;
+			if (first < 0)
+				first = i;
+		}
+	put_s(progname);
+	if (first < 0) {
+		put_s(": interrupted before the first of the ");
+		put_s(keep_what);
+		put_s(": nothing written\n");
+		return;
+	}
+	put_s(": interrupted: ");
+	put_s(keep_path[first]);
+	put_s(" keeps the ");
+	put_l(keep_units[first]);
+	put_s(" ");
+	put_s(keep_what);
+	put_s(" finished\n");
+}
+
 static void on_signal(int sig)
 {
+	if (keep_what && sig != SIGPIPE)
+		keep_marked();
 	for (int i = 0; i < MAX_TEMPS; i++)
 		if (temps[i])
 			unlink(temps[i]);
@@ -222,12 +282,41 @@ static void drop_temp(const char *tmp)
 	block(1, &saved);
 	for (int i = 0; i < MAX_TEMPS; i++)
 		if (temps[i] && strcmp(temps[i], tmp) == 0) {
-			char *t = temps[i];
+			char *t = temps[i], *k = keep_path[i];
 			temps[i] = NULL;
+			keep_path[i] = NULL;
+			keep_units[i] = 0;
 			free(t);
+			free(k);
 			break;
 		}
 	block(0, &saved);
+}
+
+void aout_keep_on_signal(const char *what)
+{
+	keep_what = what;
+}
+
+void aout_mark(struct aout *a, long units)
+{
+	if (!keep_what || !a->tmp || fflush(a->f) != 0)
+		return;     /* a write error is reported at the commit */
+	off_t len = ftello(a->f);
+	if (len < 0)
+		return;
+	for (int i = 0; i < MAX_TEMPS; i++)
+		if (temps[i] && strcmp(temps[i], a->tmp) == 0) {
+			char *k = keep_path[i] ? NULL : xstrdup(a->path);
+			sigset_t saved;
+			block(1, &saved);
+			if (k)
+				keep_path[i] = k;
+			keep_len[i] = len;
+			keep_units[i] = units;
+			block(0, &saved);
+			return;
+		}
 }
 
 /* Renames the temporary over the target, with the signals blocked so

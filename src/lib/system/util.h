@@ -79,4 +79,14 @@ void aout_abort(struct aout *a);    /* removes the temporary; frees a */
 void aout_defer(void);
 void aout_finish(void);
 
+/* A long run that writes its results as it goes (etch's print times)
+ * keeps them when interrupted: after aout_keep_on_signal("print times"),
+ * SIGINT, SIGTERM or SIGHUP cut every temporary back to its last
+ * aout_mark, rename it over its target and say in one line what was kept
+ * ("etch: interrupted: curves.plot keeps the 2 print times finished"),
+ * before dying of the signal as usual.  aout_mark(a, n): what a holds so
+ * far is n whole units (flushed; a writer calls it between units). */
+void aout_keep_on_signal(const char *what);
+void aout_mark(struct aout *a, long units);
+
 #endif

@@ -1,0 +1,42 @@
+# fem on a long sweep: progress and interruption.
+#  - without -q, "fem: K/N points" lines on stderr, K never decreasing,
+#    the last one N/N, and the summary names every file collect wrote
+#    (region.ps included, with -target);
+#  - killed mid-sweep (SIGTERM to its process group, as ^C sends SIGINT to
+#    the terminal's; both are trapped alike), fem says in one line how
+#    many points are done (a point make was finishing may be deleted, so 0 is possible) and that the same command resumes, and exits
+#    130; the finished points stay, no temporary is left, and the same
+#    command then finishes the sweep (fem.dat has every point).
+. "$TOP/tests/lib/common.sh"
+built fem
+need setsid
+E=$TOP/examples/contact
+set -- -if "$E/mask.in" -bf "$E/resist.in" -et 10 -dose 70:90:10 -focus -1:1:1 \
+	-measure "-rel 10 -hole 0 0" -j 2
+setsid "$BUILD/bin/fem" "$@" >/dev/null 2>err1.txt &
+pid=$!
+n=0
+until ls fem/f*/d*/measure.dat >/dev/null 2>&1; do
+	sleep 0.2
+	n=$((n + 1))
+	[ $n -lt 600 ] || { kill -TERM -"$pid"; fail "no point finished in 120 s"; }
+done
+kill -TERM -"$pid" || fail "cannot signal fem"
+wait "$pid"
+st=$?
+[ $st -eq 130 ] || fail "interrupted fem: exit $st, expected 130: $(cat err1.txt)"
+grep -Eq '^fem: interrupted after [0-8]/9 points; run the same command again to resume$' err1.txt ||
+	fail "no resume line: $(cat err1.txt)"
+done1=$(ls fem/f*/d*/measure.dat | wc -l)
+[ "$done1" -ge 1 ] && [ "$done1" -lt 9 ] || fail "$done1 points done after the interruption"
+[ -z "$(find fem -name '*.tmp*')" ] || fail "temporaries left: $(find fem -name '*.tmp*')"
+# the same command resumes and finishes
+fem "$@" -target 0.85 -tol 10 >/dev/null 2>err2.txt || fail "the resumed fem failed: $(tail -n 3 err2.txt)"
+grep -E '^fem: [0-9]+/9 points$' err2.txt | sed 's/^fem: \([0-9]*\)\/.*/\1/' >counts.txt
+[ -s counts.txt ] || fail "no progress lines: $(cat err2.txt)"
+awk 'NR > 1 && $1 < last { exit 1 } { last = $1 }' counts.txt || fail "progress decreased: $(cat counts.txt)"
+[ "$(tail -n 1 counts.txt)" = 9 ] || fail "progress did not end at 9/9: $(cat err2.txt)"
+[ "$(head -n 1 counts.txt)" -ge "$done1" ] || fail "the resumed run started below the finished points"
+grep -q "region.ps" err2.txt || fail "the summary omits region.ps: $(tail -n 1 err2.txt)"
+[ "$(awk '!/^#/ && NF' fem/fem.dat | wc -l)" -eq 9 ] || fail "fem.dat: not 9 points"
+exit 0
