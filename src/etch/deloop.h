@@ -37,13 +37,18 @@
  *     chains become one chain of shared nodes and segments.  Stretches
  *     that cannot be joined are left open, their cut nodes pulled back a
  *     little towards the kept nodes (DELOOP_PULLBACK) so that the sheets
- *     do not touch;
+ *     do not touch, and closed at the end of the run (deloop_close.c);
  *  4. the crossings are searched again; any left (folds shallower than the
  *     margin, where both sides pass for front) go node by node, the node of
  *     a crossing segment deeper in developed resist first, until none is
  *     left or DELOOP_PASSES passes have run.  A node barely past the
  *     other sheet (a fold at a joined seam) is merged onto a neighbour
  *     rather than deleted, so that the joined surface stays closed.
+ *
+ * At the end (deloop.c, close_open) each loop of open border left is
+ * triangulated (deloop_close.c) unless its triangles would cross the
+ * surface; those that would are closed regardless and the stages run
+ * again on the crossings, in rounds, until no border is open.
  */
 #ifndef ETCH_DELOOP_H
 #define ETCH_DELOOP_H
@@ -104,6 +109,16 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
  * took the other sheet's node.  Returns the segments joined. */
 long deloop_zip(struct mesh *m, const unsigned char *fresh, size_t nfresh,
 		unsigned char *welded, size_t nwelded);
+
+/* Whether segment s is open border: one triangle, and not lying on a
+ * face of the box. */
+int deloop_border_open(const struct mesh *m, int s);
+
+/* Closes the open border loops the joining left (deloop_close.c): each
+ * loop triangulated, and opened again if its triangles cross the
+ * surface (unless force: then the crossings are left for deloop's
+ * passes).  Returns the loops closed. */
+long deloop_close(struct mesh *m, int force);
 
 /* Total length (um) of the open border of m: segments with one triangle
  * not lying on a face of the box. */
