@@ -107,6 +107,18 @@ static int ear_ok(const struct mesh *m, const int *v, const double (*sn)[3], int
 	int a = v[(i + n - 1) % n], b = v[i], c = v[(i + 1) % n];
 	if (a == c || (n > 3 && mesh_find_segment(m, a, c) >= 0) || dist2(m, a, c) > span2)
 		return 0;
+	if (n == 3) {
+		/* the last triangle must not lie back to back on another */
+		int e = mesh_find_segment(m, a, b);
+		for (int k = 0; e >= 0 && k < 2; k++) {
+			int x = m->seg[e].t[k];
+			if (x < 0)
+				continue;
+			const int *tn = m->tri[x].n;
+			if ((tn[0] == c || tn[1] == c || tn[2] == c))
+				return 0;
+		}
+	}
 	double nt[3];
 	tri_normal(m, c, b, a, nt);
 	double l = fmax(dist2(m, a, b), fmax(dist2(m, b, c), dist2(m, a, c)));
@@ -159,10 +171,17 @@ static int close_loop(struct mesh *m, int *v, int n, int way, int **tris, size_t
 		      size_t *cap)
 {
 	double (*sn)[3] = xreallocarray(NULL, (size_t)n, sizeof *sn), span2 = 0;
+	int virt = -1;
 	for (int k = 0; k < n; k++) {
-		seg_normal(m, mesh_find_segment(m, v[k], v[(k + 1) % n]), sn[k]);
+		int e = mesh_find_segment(m, v[k], v[(k + 1) % n]);
+		if (e >= 0)
+			seg_normal(m, e, sn[k]);
+		else
+			virt = k;       /* the chord closing a path (close_all) */
 		span2 = fmax(span2, dist2(m, v[k], v[(k + 1) % n]));
 	}
+	if (virt >= 0)
+		memcpy(sn[virt], sn[(virt + n - 1) % n], sizeof sn[virt]);
 	span2 *= CLOSE_SPAN * CLOSE_SPAN;
 	int ok = 1;
 	while (n >= 3) {
@@ -200,6 +219,49 @@ static int close_loop(struct mesh *m, int *v, int n, int way, int **tris, size_t
 	return ok;
 }
 
+/* A loop of at most four segments round one or two triangles that touch
+ * nothing else (debris of the cuts, a scrap of a sheet cut off on every
+ * side) cannot be closed without making a pillow (two triangles on the
+ * same nodes back to back, which a later split would double a segment
+ * of): the scrap is deleted instead.  Returns 1 if it was. */
+static int drop_island(struct mesh *m, const int *v, int n)
+{
+	if (n > 4)
+		return 0;
+	int t[2] = {-1, -1}, nt = 0;
+	for (int i = 0; i < n; i++)
+		for (int j = i + 1; j < n; j++) {
+			int e = mesh_find_segment(m, v[i], v[j]);
+			if (e < 0)
+				continue;
+			for (int k = 0; k < 2; k++) {
+				int x = m->seg[e].t[k];
+				if (x < 0 || x == t[0] || x == t[1])
+					continue;
+				if (nt == 2)
+					return 0;
+				t[nt++] = x;
+			}
+		}
+	/* every node of the scrap's triangles is on the loop, and each of
+	 * its segments has no triangle outside the scrap */
+	for (int k = 0; k < nt; k++)
+		for (int j = 0; j < 3; j++) {
+			int on = 0, e = m->tri[t[k]].s[j];
+			for (int i = 0; i < n; i++)
+				on |= m->tri[t[k]].n[j] == v[i];
+			for (int c = 0; c < 2; c++) {
+				int x = m->seg[e].t[c];
+				on &= x < 0 || x == t[0] || x == t[1];
+			}
+			if (!on)
+				return 0;
+		}
+	for (int k = 0; k < nt; k++)
+		mesh_kill_triangle(m, t[k]);
+	return nt > 0;
+}
+
 /* Closes the loop v[0 .. n) and records its triangles (loop[k] the
  * loop's number for tris[k]), or removes them if it cannot be closed.
  * Returns 1 if closed. */
@@ -209,6 +271,8 @@ static int take_loop(struct mesh *m, int *v, int n, int way, long nloop, int **t
 	if (n < 3)
 		return 0;
 	size_t first = *ntris;
+	if (drop_island(m, v, n))
+		return 0;
 	int ok = close_loop(m, v, n, way, tris, ntris, cap);
 	if (!ok) {
 		for (size_t k = first; k < *ntris; k++)
@@ -222,12 +286,26 @@ static int take_loop(struct mesh *m, int *v, int n, int way, long nloop, int **t
 	return 1;
 }
 
+/* Whether an open segment of the first ns arrives at node a. */
+static int arriving(const struct mesh *m, int a, size_t ns)
+{
+	for (int k = 0; k < m->node[a].nseg; k++) {
+		int s = m->node[a].seg[k];
+		if ((size_t)s < ns && deloop_border_open(m, s) && border_from(m, s) != a)
+			return 1;
+	}
+	return 0;
+}
+
 /* One closing: the open border walked segment by segment, each segment
  * once; a walk that comes back to a node on its path has gone round a
  * loop, which is cut off the path and closed (a border passing twice
- * through a node, pinched, so falls into simple loops).  A walk that
- * meets a face of the box ends there, open.  loop[k] is the loop of new
- * triangle tris[k].  Returns the loops closed. */
+ * through a node, pinched, so falls into simple loops).  Walks start
+ * first where an open stretch begins on a face of the box (a slit that
+ * reaches the substrate), then anywhere; a stretch that ends on the same
+ * face it began on is closed with the chord between its ends, which lies
+ * on that face (border where the mesh is meant to end).  loop[k] is the
+ * loop of new triangle tris[k].  Returns the loops closed. */
 static long close_all(struct mesh *m, int way, int **tris, int **loop, size_t *ntris)
 {
 	size_t ns = m->nseg, cap = 0, capl = 0, capv = 0, capw = 0, nv = 0;
@@ -236,10 +314,13 @@ static long close_all(struct mesh *m, int way, int **tris, int **loop, size_t *n
 	int *v = NULL, *w = NULL;
 	long loops = 0;
 	*ntris = 0;
+	for (int sweep = 0; sweep < 2; sweep++)
 	for (size_t s0 = 0; s0 < ns; s0++) {
 		if (seen[s0] || !deloop_border_open(m, (int)s0))
 			continue;
 		int s = (int)s0;
+		if (sweep == 0 && arriving(m, border_from(m, s), ns))
+			continue;
 		xgrow(&v, &capv, 1, sizeof *v);
 		v[0] = border_from(m, s);
 		pos[v[0]] = 1;
@@ -262,6 +343,12 @@ static long close_all(struct mesh *m, int way, int **tris, int **loop, size_t *n
 				pos[b] = (int)nv;
 			}
 			s = leaving(m, v[nv - 1], seen, ns);
+		}
+		unsigned face = m->node[v[0]].flags & m->node[v[nv - 1]].flags & (ON_WALLS | ON_SUB);
+		if (nv >= 3 && s < 0 && face && mesh_find_segment(m, v[0], v[nv - 1]) < 0) {
+			xgrow(&w, &capw, nv, sizeof *w);
+			memcpy(w, v, nv * sizeof *w);
+			loops += take_loop(m, w, (int)nv, way, loops, tris, loop, ntris, &cap, &capl);
 		}
 		for (size_t k = 0; k < nv; k++)
 			pos[v[k]] = 0;
@@ -330,3 +417,5 @@ long deloop_close(struct mesh *m, int force)
 		closed += close_way(m, way);
 	return closed;
 }
+
+
