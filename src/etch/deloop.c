@@ -63,6 +63,12 @@
  * margin, each on the crossings the previous left; two or three suffice
  * in every case tested, the cap bounds the work. */
 #define DELOOP_PASSES 12
+/* Rounds of closing the open border the passes leave (deloop_close_open): each
+ * round closes what it can cleanly, then forces the rest and deloops
+ * the crossings that makes; three rounds close the examples. */
+#define DELOOP_CLOSE_ROUNDS 32
+/* ... stopping after this many rounds that left no less border open. */
+#define DELOOP_CLOSE_STALE 6
 
 /* Local passes that first try to merge the chosen nodes away
  * (merge_away); the later ones delete them, which always progresses. */
@@ -517,8 +523,67 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
 	rep->open_left = deloop_open_length(m);
 }
 
+/* The open border a loop-free run leaves is closed (deloop_close.c):
+ * first every loop whose closing crosses nothing; the loops left (the
+ * other sheet passes through where their closing must go) are closed
+ * regardless and the passes run again on the crossings that makes, which
+ * cut or delete the nodes past the other sheet and so open smaller loops,
+ * closed in turn.  The rounds need not shrink the border every time, so
+ * the mesh with the least border open is kept (a copy), and the rounds
+ * stop when it is closed, after DELOOP_CLOSE_STALE rounds without
+ * improving it, at a round that leaves crossings or an inconsistent
+ * mesh, or at the cap. */
+void deloop_close_open(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+		       struct deloop_report *rep)
+{
+	if (rep->left > 0 || !(rep->open_left > 0))
+		return;
+	deloop_close(m, 0);
+	rep->open_left = deloop_open_length(m);
+	struct mesh *best = NULL;
+	struct deloop_report sum = *rep;
+	int stale = 0;
+	for (int round = 1; round < DELOOP_CLOSE_ROUNDS && rep->open_left > 0 &&
+	     stale < DELOOP_CLOSE_STALE; round++) {
+		if (!best)
+			best = mesh_copy(m);
+		deloop_close(m, 1);
+		struct deloop_report r2;
+		deloop_passes(m, fm, f, t, 1, &r2);
+		/* the passes on a forced closing can leave the mesh
+		 * inconsistent (a segment doubled by a weld across a fold):
+		 * such a round is undone like one that leaves crossings */
+		if (r2.left > 0 || mesh_check(m))
+			break;
+		sum.loops += r2.loops;
+		sum.removed_tris += r2.removed_tris;
+		sum.cuts += r2.cuts;
+		sum.joined += r2.joined;
+		sum.merged += r2.merged;
+		sum.folds += r2.folds;
+		deloop_close(m, 0);
+		sum.open_left = deloop_open_length(m);
+		if (sum.open_left < rep->open_left) {
+			*rep = sum;
+			mesh_free(best);
+			best = NULL;
+			stale = 0;
+		} else {
+			stale++;
+		}
+	}
+	if (best) {
+		/* back to the best mesh */
+		struct mesh last = *m;
+		*m = *best;
+		*best = last;
+		mesh_free(best);
+	}
+}
+
 /* Joining the sheets along the intersection curve (deloop_zip.c) leaves,
- * on some meshes, crossings no later pass removes (the unbaked contact at
+ * on some meshes, crossings no later pass removes, or (on a mesh whose
+ * open border was closed at an earlier deloop) a doubled segment (the unbaked contact at
  * 240 mJ/cm2 with 0.1 um segments: 4, however many passes).  A loop-free
  * mesh matters more than a closed seam, so the run is then redone from a
  * copy of the mesh without joining: the sheets end a pull-back apart. */
@@ -527,7 +592,9 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
 {
 	struct mesh *before = mesh_copy(m);
 	deloop_passes(m, fm, f, t, 1, rep);
-	if (rep->left > 0) {
+	/* joining across a fold can also double a segment (two welds onto
+	 * the same pair of nodes): redone without it as well */
+	if (rep->left > 0 || mesh_check(m)) {
 		struct mesh joined = *m;
 		*m = *before;
 		*before = joined;

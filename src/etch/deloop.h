@@ -37,13 +37,22 @@
  *     chains become one chain of shared nodes and segments.  Stretches
  *     that cannot be joined are left open, their cut nodes pulled back a
  *     little towards the kept nodes (DELOOP_PULLBACK) so that the sheets
- *     do not touch;
+ *     do not touch, and closed at the end of the run (deloop_close.c);
  *  4. the crossings are searched again; any left (folds shallower than the
  *     margin, where both sides pass for front) go node by node, the node of
  *     a crossing segment deeper in developed resist first, until none is
  *     left or DELOOP_PASSES passes have run.  A node barely past the
  *     other sheet (a fold at a joined seam) is merged onto a neighbour
  *     rather than deleted, so that the joined surface stays closed.
+ *
+ * For the surface written at a print time (deloop_close_open, on a copy
+ * of the mesh) each loop of open border left is triangulated
+ * (deloop_close.c) unless its triangles would cross the surface; those
+ * that would are closed regardless and the stages run again on the
+ * crossings, in rounds, until no border is open.  The front that goes on
+ * advancing keeps its seams open: closed in place, the closing's
+ * triangles folded into later deloops and steps, and a merge doubled a
+ * segment (car-arf-contact with -pt 10, found by -check).
  */
 #ifndef ETCH_DELOOP_H
 #define ETCH_DELOOP_H
@@ -104,6 +113,24 @@ long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, do
  * took the other sheet's node.  Returns the segments joined. */
 long deloop_zip(struct mesh *m, const unsigned char *fresh, size_t nfresh,
 		unsigned char *welded, size_t nwelded);
+
+/* Whether segment s is open border: one triangle, and not lying on a
+ * face of the box. */
+int deloop_border_open(const struct mesh *m, int s);
+
+/* Closes the open border loops the joining left (deloop_close.c): each
+ * loop triangulated, and opened again if its triangles cross the
+ * surface (unless force: then the crossings are left for deloop's
+ * passes).  Returns the loops closed. */
+long deloop_close(struct mesh *m, int force);
+
+/* Closes the open border of m, delooped at time t (deloop_run, whose
+ * report rep is updated): the loops deloop_close closes cleanly, then
+ * rounds of forced closing and deloop passes, keeping the mesh with the
+ * least border open.  For the surface written at a print time, on a copy
+ * (ray_run.c): the front that goes on advancing keeps its seams open. */
+void deloop_close_open(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+		       struct deloop_report *rep);
 
 /* Total length (um) of the open border of m: segments with one triangle
  * not lying on a face of the box. */

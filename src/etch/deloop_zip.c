@@ -80,6 +80,11 @@ static int is_open(const struct mesh *m, int s)
 	return !(f & (ON_WALLS | ON_SUB));
 }
 
+int deloop_border_open(const struct mesh *m, int s)
+{
+	return is_open(m, s);
+}
+
 double deloop_open_length(const struct mesh *m)
 {
 	double len = 0;

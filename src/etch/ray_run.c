@@ -24,6 +24,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 /* A maximum of the standing waves stands this far above the minima
@@ -170,6 +171,25 @@ static void deloop_now(struct mesh *m, const struct fmm *fm, const struct rfield
 	st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
 }
 
+/* The surface written at a print time with -deloop: a copy of the
+ * delooped mesh with its open border closed (deloop_close_open); the
+ * mesh that goes on advancing keeps its seams open. */
+static struct mesh *closed_copy(const struct mesh *m, const struct fmm *fm,
+				const struct rfield *f, double t, struct etch_stats *st)
+{
+	clock_t c0 = clock();
+	struct mesh *c = mesh_copy(m);
+	struct deloop_report rep;
+	memset(&rep, 0, sizeof rep);
+	rep.left = st->crossings_left;
+	rep.open_left = st->open_left;
+	deloop_close_open(c, fm, f, t, &rep);
+	mesh_compact(c);
+	st->open_left = rep.open_left;
+	st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
+	return c;
+}
+
 struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 		      struct etch_stats *st)
 {
@@ -256,8 +276,20 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 			progress_step(&prog, t + i * (span / n), o->et);
 		}
 		t = tp;
+		struct mesh *shown = m;
+		if (fm && (!o->last || tp >= o->et)) {
+			shown = closed_copy(m, fm, f, tp, st);
+			if (o->check)
+				check(shown, st->steps);
+		}
 		if (!o->last || tp >= o->et)    /* -last: only the final set */
-			out_write(out, m);
+			out_write(out, shown);
+		if (shown != m && tp >= o->et) {
+			mesh_free(m);
+			m = shown;
+		} else if (shown != m) {
+			mesh_free(shown);
+		}
 		if (!o->quiet)
 			fprintf(stderr, "%s: t = %g s: %zu nodes, %zu triangles\n",
 				util_prog(), t, m->live_node, m->live_tri);
