@@ -265,12 +265,17 @@ struct mesh *etch_run(const struct rfield *f, const struct etch_opts *o,
 				mesh_compact(m);
 			st->steps++;
 			note_size(m, st);
-			if ((long)m->live_tri > 2 * st->max_live_tri)
+			if ((long)m->live_tri > 2 * st->max_live_tri) {
+				/* freed first: die exits at once, and the leak checker
+				 * of the sanitizer runs would count the mesh */
+				double tnow = t + i * (span / n);
+				mesh_free(m);
 				die("%s: at t = %g s the mesh grew past its bound of %ld triangles "
 				    "(%d times the box's faces in S_ideal triangles): the rate varies "
 				    "faster than S_ideal %g um resolves (a spike?); try -method fmm",
-				    o->input ? o->input : "etch", t + i * (span / n),
+				    o->input ? o->input : "etch", tnow,
 				    2 * st->max_live_tri, ETCH_MESH_FACTOR, seg);
+			}
 			if (o->check)
 				check(m, st->steps);
 			progress_step(&prog, t + i * (span / n), o->et);

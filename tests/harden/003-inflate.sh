@@ -31,7 +31,13 @@ splat -q -o g.cont g.in 2>err.txt || fail "g.gds.gz within the limit: $(cat err.
 
 # a window of 2000 um at NA 0.99: refused; under ulimit -v the limit named
 printf 'wavelength 0.365\nna 0.99\nwindow -1000 1000 -1000 1000\nrect 0 0 1 1\n' >w.in
-(ulimit -v 3000000 && splat -q -o w.cont w.in) 2>err.txt && fail "the 2000 um window ran"
-grep -q "the 3.07 GB of memory the address-space limit (ulimit -v) allows" err.txt ||
-	fail "ulimit -v: $(cat err.txt)"
+# (not in a sanitizer build: its shadow memory needs more address space
+# than any such limit allows, so the program cannot start under one)
+if nm "$BUILD/bin/splat" 2>/dev/null | grep -q __asan_init; then
+	echo "ulimit -v check left out: a sanitizer build"
+else
+	(ulimit -v 3000000 && splat -q -o w.cont w.in) 2>err.txt && fail "the 2000 um window ran"
+	grep -q "the 3.07 GB of memory the address-space limit (ulimit -v) allows" err.txt ||
+		fail "ulimit -v: $(cat err.txt)"
+fi
 exit 0
