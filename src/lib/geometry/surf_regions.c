@@ -11,27 +11,12 @@
  * line, so the figures do not depend on the thread count.
  */
 #include "surf_lines.h"
+#include "unionfind.h"
 #include "util.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-static size_t uf_find(size_t *parent, size_t i)
-{
-	while (parent[i] != i) {
-		parent[i] = parent[parent[i]];
-		i = parent[i];
-	}
-	return i;
-}
-
-static void uf_join(size_t *parent, size_t a, size_t b)
-{
-	a = uf_find(parent, a);
-	b = uf_find(parent, b);
-	if (a != b)
-		parent[a < b ? b : a] = a < b ? a : b;
-}
 
 /* The developed spans of all lines, line after line: dev[lstart[l] ..
  * lstart[l + 1] - 1] are line l's, ascending in x.  Returns dev. */

@@ -19,6 +19,7 @@
  * or lost.
  */
 #include "surf.h"
+#include "unionfind.h"
 #include "util.h"
 
 #include <math.h>
@@ -220,23 +221,6 @@ struct surf_span surf_span_at(const struct surf *s, const struct surf_section *s
 	return r;
 }
 
-/* union-find over the developed spans of all lines */
-static size_t uf_find(size_t *parent, size_t i)
-{
-	while (parent[i] != i) {
-		parent[i] = parent[parent[i]];
-		i = parent[i];
-	}
-	return i;
-}
-
-static void uf_join(size_t *parent, size_t a, size_t b)
-{
-	a = uf_find(parent, a);
-	b = uf_find(parent, b);
-	if (a != b)
-		parent[a < b ? b : a] = a < b ? a : b;
-}
 
 /* The lines of surf_region_area: y_j = y + j h for j in [j0, j1]. */
 static double line_y(double y, double h, long j) { return y + (double)j * h; }
