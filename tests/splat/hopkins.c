@@ -23,6 +23,7 @@
 #include "splat.h"
 #include "util.h"
 #include "splattest.h"
+#include "abbe_rows.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -185,84 +186,16 @@ static void abbe_point(struct abbe *a, double sx, double sy, double w)
 	a->norm += w;       /* |P(s)|^2 = 1 on the source (sigma < 1) */
 }
 
-static int cmpd(const void *x, const void *y)
+/* abbe_rows calls this at every source node. */
+static void abbe_node(void *ctx, double sx, double sy, double w)
 {
-	double u = *(const double *)x, v = *(const double *)y;
-	return (u > v) - (u < v);
+	abbe_point(ctx, sx, sy, w);
 }
 
 static void abbe_image(struct abbe *a)
 {
-	double R = ANA / ALAMBDA, rs = ASIGMA * R;
-	/* circles: the source, and the pupil of each order in s space */
-	int nc = a->n + 1;
-	double *cx = xcalloc((size_t)nc, sizeof *cx), *cy = xcalloc((size_t)nc, sizeof *cy);
-	double *rr = xcalloc((size_t)nc, sizeof *rr);
-	cx[0] = cy[0] = 0;
-	rr[0] = rs;
-	for (int k = 0; k < a->n; k++) {
-		cx[k + 1] = -a->fx[k];
-		cy[k + 1] = -a->fy[k];
-		rr[k + 1] = R;
-	}
-	/* rows: cut at every top, bottom and crossing of two circles */
-	size_t cap = 2 + 2 * (size_t)nc + (size_t)nc * nc, nb = 0;
-	double *bp = xcalloc(cap, sizeof *bp);
-	bp[nb++] = -rs;
-	bp[nb++] = rs;
-	for (int i = 0; i < nc; i++) {
-		bp[nb++] = cy[i] + rr[i];
-		bp[nb++] = cy[i] - rr[i];
-		for (int j = i + 1; j < nc; j++) {
-			double dx = cx[j] - cx[i], dy = cy[j] - cy[i], d = hypot(dx, dy);
-			if (d == 0 || d >= rr[i] + rr[j] || d <= fabs(rr[i] - rr[j]))
-				continue;
-			double l = (rr[i] * rr[i] - rr[j] * rr[j] + d * d) / (2 * d);
-			double h = sqrt(fmax(0, rr[i] * rr[i] - l * l));
-			bp[nb++] = cy[i] + l * dy / d + h * dx / d;
-			bp[nb++] = cy[i] + l * dy / d - h * dx / d;
-		}
-	}
-	qsort(bp, nb, sizeof *bp, cmpd);
-	double *xb = xcalloc(2 * (size_t)nc + 2, sizeof *xb);
-	for (size_t k = 0; k + 1 < nb; k++) {
-		double y0 = fmax(bp[k], -rs), y1 = fmin(bp[k + 1], rs);
-		if (!(y1 > y0))
-			continue;
-		for (int io = 0; io < a->ng; io++) {
-			/* y = mid + half sin(t) smooths the square-root ends */
-			double t = a->gu[io] * M_PI / 2;
-			double y = 0.5 * (y0 + y1) + 0.5 * (y1 - y0) * sin(t);
-			double wy = a->gw[io] * M_PI / 2 * 0.5 * (y1 - y0) * cos(t);
-			double hs = sqrt(fmax(0, rs * rs - y * y));
-			int nx = 0;
-			xb[nx++] = -hs;
-			xb[nx++] = hs;
-			for (int i = 1; i < nc; i++) {
-				double e = rr[i] * rr[i] - (y - cy[i]) * (y - cy[i]);
-				if (e <= 0)
-					continue;
-				double hw = sqrt(e);
-				if (cx[i] - hw > -hs && cx[i] - hw < hs) xb[nx++] = cx[i] - hw;
-				if (cx[i] + hw > -hs && cx[i] + hw < hs) xb[nx++] = cx[i] + hw;
-			}
-			qsort(xb, (size_t)nx, sizeof *xb, cmpd);
-			for (int s = 0; s + 1 < nx; s++) {
-				double a0 = xb[s], a1 = xb[s + 1];
-				if (!(a1 > a0))
-					continue;
-				for (int ii = 0; ii < a->ng; ii++) {
-					double x = 0.5 * (a0 + a1) + 0.5 * (a1 - a0) * a->gu[ii];
-					abbe_point(a, x, y, wy * a->gw[ii] * 0.5 * (a1 - a0));
-				}
-			}
-		}
-	}
-	free(cx);
-	free(cy);
-	free(rr);
-	free(bp);
-	free(xb);
+	double R = ANA / ALAMBDA;
+	abbe_rows(a->n, a->fx, a->fy, R, ASIGMA * R, a->ng, a->gu, a->gw, abbe_node, a);
 }
 
 static void test_abbe(void)
