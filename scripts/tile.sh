@@ -5,7 +5,10 @@
 # array instead), and stitch joins the tiles' images and developed
 # surfaces, each taken in its core, into DIR/image.cont and
 # DIR/curves.plot.  Tiles whose inputs are the same file (the cells of a
-# periodic array) run once.  Resumable as fem: the Makefile's targets are
+# periodic array) run once.  splat images every tile by Abbe's method, the
+# one it takes for large windows: its source points do not depend on the
+# window, so a tile's image is the large window's (Hopkins' pair sum
+# differs from it by up to 5e-4, splat(1)).  Resumable as fem: the Makefile's targets are
 # the tiles' files, and a tile input is rewritten only when it changes.
 # See stitch(1) and sample3D(1), TILES.
 #
@@ -66,12 +69,14 @@ tile_check() {
 		usage_error "-tile cuts the splat input: give -if, -bf and -et"
 	[ -z "$accuracy" ] || usage_error "-tile and -accuracy: refine one tile by hand (-accuracy is per window)"
 	[ -z "$plot" ] || usage_error "-tile writes no pictures: drop -plot"
+	# fast marching unless an etch option chooses: its surfaces are what
+	# stitch welds and measure reads (before sample3D checks etch's options)
+	etch_engine_default
 }
 
 # tile_run: writes the work directory and its Makefile, runs make (or
 # writes the Slurm scripts), then measures the stitched surface
 tile_run() {
-	etch_engine_default
 	mkdir -p "$tile_dir/in" "$tile_dir/u" || die "cannot make $tile_dir"
 	stitch -cut "$tile_w" ${tile_halo:+-halo "$tile_halo"} -d "$tile_dir/in" "$splat_in" \
 		>"$tile_dir/tiles.txt" || die "stitch -cut failed; stopping"
@@ -107,7 +112,7 @@ tile_run() {
 		echo "all: curves.plot image.cont"
 		for k in $keys; do
 			printf 'u/%s/curves.plot: u/%s/tile.in resist.in\n' "$k" "$k"
-			printf '\tcd u/%s && $(SPLAT) -q tile.in && $(BLEACH) -q -o rval.3D.binary image.cont ../../resist.in && $(ETCH) $(ETCHOPTS) rval.3D.binary && rm -f rval.3D.binary\n' "$k"
+			printf '\tcd u/%s && $(SPLAT) -q -method abbe tile.in && $(BLEACH) -q -o rval.3D.binary image.cont ../../resist.in && $(ETCH) $(ETCHOPTS) rval.3D.binary && rm -f rval.3D.binary\n' "$k"
 			printf 'u/%s/image.cont: u/%s/curves.plot\n' "$k" "$k"
 		done
 		printf 'curves.plot:'

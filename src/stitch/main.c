@@ -18,7 +18,8 @@
 
 static const char usage[] =
 	"usage: stitch -cut W [-halo H] [-d DIR] splat-inputfile\n"
-	"       stitch [-image] [-o FILE] [-q] -t FILE DX DY XMIN XMAX YMIN YMAX ...\n"
+	"       stitch [-image] [-o FILE] [-q] [-window XMIN XMAX YMIN YMAX]\n"
+	"              -t FILE DX DY XMIN XMAX YMIN YMAX ...\n"
 	"  -cut W      cut the splat input into tiles whose cores are W um wide,\n"
 	"              rounded to its grid; writes DIR/tNNNN.in per tile and prints\n"
 	"              one line per tile: tNNNN.in DX DY XMIN XMAX YMIN YMAX\n"
@@ -29,17 +30,54 @@ static const char usage[] =
 	"              its coordinates to the output's, its core (output's, um)\n"
 	"  -image      the tiles are contour-files (aerial images); without it\n"
 	"              plot3d surfaces, cut to their cores and welded at the seams\n"
+	"  -window XMIN XMAX YMIN YMAX  join only this part of the cores (um)\n"
 	"  -o FILE     the output (default stitched.plot, with -image stitched.cont)\n"
 	"  -q          quiet: no line about open seams\n"
 	"  -h, --help  this text\n";
 
 struct options {
 	double cut, halo;
-	int have_cut, image, quiet;
+	int have_cut, image, quiet, have_window;
+	double window[4];
 	const char *dir, *out, *input;
 	struct tile *t;
 	int nt;
 };
+
+/* -window XMIN XMAX YMIN YMAX */
+static void window_arg(struct args *a, struct options *o)
+{
+	char **v = a->argv + a->i;
+	if (a->i + 4 >= a->argc) {
+		args_error(a, "-window needs XMIN XMAX YMIN YMAX");
+		a->i = a->argc;
+		return;
+	}
+	for (int k = 0; k < 4; k++)
+		if (!num_parse(v[1 + k], &o->window[k]) || !isfinite(o->window[k]))
+			args_error(a, "-window: %s is not a number", v[1 + k]);
+	if (!(o->window[0] < o->window[1] && o->window[2] < o->window[3]))
+		args_error(a, "-window must have XMIN < XMAX and YMIN < YMAX");
+	o->have_window = 1;
+	a->i += 5;
+}
+
+/* The cores cut to the window; tiles left without a core dropped. */
+static void apply_window(struct options *o)
+{
+	int m = 0;
+	for (int k = 0; k < o->nt; k++) {
+		double *c = o->t[k].core;
+		c[0] = fmax(c[0], o->window[0]), c[1] = fmin(c[1], o->window[1]);
+		c[2] = fmax(c[2], o->window[2]), c[3] = fmin(c[3], o->window[3]);
+		if (c[0] < c[1] && c[2] < c[3])
+			o->t[m++] = o->t[k];
+	}
+	o->nt = m;
+	if (m == 0)
+		die("-window %g %g %g %g: no core meets it", o->window[0], o->window[1],
+		    o->window[2], o->window[3]);
+}
 
 /* -t FILE DX DY XMIN XMAX YMIN YMAX */
 static void tile_arg(struct args *a, struct options *o, size_t *cap)
@@ -75,6 +113,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		args_help_exit(&a, 1);
 		if (strcmp(argv[a.i], "-t") == 0)
 			tile_arg(&a, o, &cap);
+		else if (strcmp(argv[a.i], "-window") == 0)
+			window_arg(&a, o);
 		else if (args_num(&a, "-cut", 0, INFINITY, &o->cut))
 			o->have_cut = 1;
 		else if (args_num(&a, "-halo", 0, INFINITY, &o->halo))
@@ -93,8 +133,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 			args_error(&a, "-cut: the tile must be wider than 0 um");
 		if (!o->input)
 			args_error(&a, "-cut needs the splat input file");
-		if (o->nt || o->image || o->out)
-			args_error(&a, "-cut writes tiles: -t, -image and -o belong to the join");
+		if (o->nt || o->image || o->out || o->have_window)
+			args_error(&a, "-cut writes tiles: -t, -image, -window and -o belong to the join");
 	} else {
 		if (have_halo || o->dir)
 			args_error(&a, "-halo and -d belong to -cut");
@@ -111,6 +151,8 @@ int main(int argc, char **argv)
 	util_setprog(argv[0]);
 	struct options o;
 	parse_options(argc, argv, &o);
+	if (o.have_window)
+		apply_window(&o);
 	if (o.have_cut) {
 		stitch_cut(o.input, o.cut, o.halo, o.dir ? o.dir : "tiles");
 	} else if (o.image) {
