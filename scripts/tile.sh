@@ -1,14 +1,14 @@
-# tile.sh - sourced by sample3D (and fem): -tile W, layouts beyond one
-# window.  The splat input is cut into tiles of W um with a halo
-# (stitch -cut), each tile runs splat, bleach and etch on its own window
-# as a make target in a work directory (-j N; -slurm writes a Slurm job
-# array instead), and stitch joins the tiles' images and developed
-# surfaces, each taken in its core, into DIR/image.cont and
-# DIR/curves.plot.  Tiles whose inputs are the same file (the cells of a
-# periodic array) run once.  splat images every tile by Abbe's method, the
-# one it takes for large windows: its source points do not depend on the
-# window, so a tile's image is the large window's (Hopkins' pair sum
-# differs from it by up to 5e-4, splat(1)).  Resumable as fem: the Makefile's targets are
+# tile.sh - sourced by sample3D: -tile W, layouts beyond one window.
+# The splat input is cut into tiles of W um with a halo (stitch -cut),
+# each tile runs splat, bleach and etch on its own window as a make
+# target in a work directory (-j N; -slurm writes a Slurm job array
+# instead), and stitch joins the tiles' images and developed surfaces,
+# each taken in its core, into DIR/image.cont and DIR/curves.plot.
+# Tiles whose inputs are the same file (the cells of a periodic array)
+# run once.  splat images every tile by Abbe's method, the one it takes
+# for large windows: its source points do not depend on the window, so a
+# tile's image is the large window's (Hopkins' pair sum differs from it
+# by up to 5e-4, splat(1)).  Resumable as fem: the Makefile's targets are
 # the tiles' files, and a tile input is rewritten only when it changes.
 # See stitch(1) and sample3D(1), TILES.
 #

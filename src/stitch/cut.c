@@ -130,6 +130,42 @@ static int cmp_rect(const void *pa, const void *pb)
 	return 0;
 }
 
+/* Polygon statements painted alike over the same rects, in the order of
+ * their place (lowest vertex, then vertex by vertex), as the rects. */
+static int cmp_layer(const void *pa, const void *pb)
+{
+	const struct splat_layer *a = pa, *b = pb;
+	double ka[2] = {INFINITY, INFINITY}, kb[2] = {INFINITY, INFINITY};
+	for (int v = 0; v < a->pn; v++)
+		if (a->pxy[2 * v + 1] < ka[0] || (a->pxy[2 * v + 1] == ka[0] && a->pxy[2 * v] < ka[1]))
+			ka[0] = a->pxy[2 * v + 1], ka[1] = a->pxy[2 * v];
+	for (int v = 0; v < b->pn; v++)
+		if (b->pxy[2 * v + 1] < kb[0] || (b->pxy[2 * v + 1] == kb[0] && b->pxy[2 * v] < kb[1]))
+			kb[0] = b->pxy[2 * v + 1], kb[1] = b->pxy[2 * v];
+	for (int k = 0; k < 2; k++)
+		if (ka[k] != kb[k])
+			return ka[k] < kb[k] ? -1 : 1;
+	if (a->pn != b->pn)
+		return a->pn - b->pn;
+	for (int v = 0; v < 2 * a->pn; v++)
+		if (a->pxy[v] != b->pxy[v])
+			return a->pxy[v] < b->pxy[v] ? -1 : 1;
+	return 0;
+}
+
+static void sort_layers(struct cutter *c)
+{
+	for (int i = 0; i < c->nlayers;) {
+		const struct splat_layer *l = &c->layers[i];
+		int j = i + 1;
+		while (j < c->nlayers && c->layers[j].after == l->after && c->layers[j].t == l->t &&
+		       c->layers[j].phase == l->phase)
+			j++;
+		qsort(c->layers + i, (size_t)(j - i), sizeof *c->layers, cmp_layer);
+		i = j;
+	}
+}
+
 /* Writes the tile of steps [i0, i1) x [j0, j1) with a halo of h steps. */
 static void write_tile(struct cutter *c, const char *path, long i0, long i1, long j0, long j1,
 		       long h)
@@ -155,6 +191,7 @@ static void write_tile(struct cutter *c, const char *path, long i0, long i1, lon
 		if (r < m->nrects)
 			cut_rect(c, &m->rects[r], kmax);
 	}
+	sort_layers(c);
 	struct splat_input t = *in;
 	t.mask.xmin = 0, t.mask.xmax = (double)(i1 - i0 + 2 * h) * c->d;
 	t.mask.ymin = 0, t.mask.ymax = (double)(j1 - j0 + 2 * h) * c->d;

@@ -9,7 +9,8 @@
 #    under the corner, one on a seam, two inside cores) within 0.5 nm;
 #  - the stitched surface has no open border: stitch warns of no open
 #    seam, and measure (which names any open border) prints nothing on
-#    stderr for a section through the corner contact.
+#    stderr for sections through the four contacts; sample3D -measure
+#    prints its table of the stitched surface.
 # Against the untiled run of the same inputs, tolerances as stated.
 . "$TOP/tests/lib/common.sh"
 built sample3D splat bleach etch stitch measure
@@ -30,9 +31,10 @@ grep -q "nz 40" resist.in || fail "the resist file has no nz 300 line to change"
 	etch -q -method fmm -et 60 -last -no2d rval.3D.binary; } 2>err.txt ||
 	fail "untiled run: $(cat err.txt)"
 mkdir tl
-(cd tl && sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -tile 3 -halo 1.5 -j 2) \
-	2>err.txt || fail "tiled run: $(cat err.txt)"
+(cd tl && sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -tile 3 -halo 1.5 -j 2 \
+	-measure "-rel 50 -hole 0 0") >table.txt 2>err.txt || fail "tiled run: $(cat err.txt)"
 [ ! -s err.txt ] || fail "tiled run: $(cat err.txt)"
+grep -q '^# cleared yes$' table.txt || fail "sample3D -tile -measure printed no table: $(cat table.txt)"
 [ "$(ls tl/tiles/in | wc -l)" -eq 4 ] || fail "expected 4 tiles, got $(ls tl/tiles/in)"
 d=$(awk 'FNR == 1 { h = 0 } /^#/ { next } h < 2 { h++; next }
 	NR == FNR { a[++n] = $1; next }
