@@ -46,14 +46,14 @@ LIB_SRC  := $(wildcard src/lib/*/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 LIB      := $(BUILD)/libsample3d.a
 
-DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin calibfit,$(if $(wildcard src/$(p)/main.c),$(p)))
+DIR_PROGS  := $(foreach p,splat bleach etch etch2d measure femwin calibfit stitch,$(if $(wildcard src/$(p)/main.c),$(p)))
 PLOT_SRC   := $(wildcard src/plot/*.c)
 PLOT_SHARE := $(filter src/plot/plot_%,$(PLOT_SRC))
 PLOT_PROGS := $(notdir $(basename $(filter-out $(PLOT_SHARE),$(PLOT_SRC))))
 PLOT_SHARE_OBJ := $(PLOT_SHARE:%.c=$(BUILD)/%.o)
 PROGS    := $(DIR_PROGS) $(PLOT_PROGS)
 DRIVERS  := sample3D sample2D fem calib
-BINS     := $(PROGS:%=$(BUILD)/bin/%) $(DRIVERS:%=$(BUILD)/bin/%) $(BUILD)/bin/etchopts.sh
+BINS     := $(PROGS:%=$(BUILD)/bin/%) $(DRIVERS:%=$(BUILD)/bin/%) $(BUILD)/bin/etchopts.sh $(BUILD)/bin/tile.sh
 
 # C unit tests: tests/<area>/*.c, each linked with the library and with the
 # objects of src/<area>/ other than main.o (so tests can call into etch).
@@ -91,7 +91,7 @@ $(DRIVERS:%=$(BUILD)/bin/%): $(BUILD)/bin/%: scripts/%.sh
 	cp $< $@
 	chmod +x $@
 
-$(BUILD)/bin/etchopts.sh: scripts/etchopts.sh
+$(BUILD)/bin/etchopts.sh $(BUILD)/bin/tile.sh: $(BUILD)/bin/%.sh: scripts/%.sh
 	@mkdir -p $(dir $@)
 	cp $< $@
 	chmod -x $@
@@ -138,6 +138,8 @@ install: all
 		chmod +x $(DESTDIR)$(PREFIX)/bin/$$d; done
 	cp scripts/etchopts.sh $(DESTDIR)$(PREFIX)/bin/etchopts.sh
 	chmod 644 $(DESTDIR)$(PREFIX)/bin/etchopts.sh
+	cp scripts/tile.sh $(DESTDIR)$(PREFIX)/bin/tile.sh
+	chmod 644 $(DESTDIR)$(PREFIX)/bin/tile.sh
 	cp man/man1/*.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp man/man5/*.5 $(DESTDIR)$(PREFIX)/share/man/man5/
 

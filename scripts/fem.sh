@@ -95,6 +95,7 @@ while [ $# -gt 0 ]; do
 	-collect) collect=yes; shift ;;
 	-q) quiet=-q; shift ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
+	-tile|-halo) bad "$1: fem does not tile (every point would be a tiled run); tile one point with sample3D -tile" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done

@@ -23,12 +23,16 @@ esac
 # the etch pass-through options, shared with fem: beside this script too
 [ -r "$here/etchopts.sh" ] || { echo "$prog: cannot find etchopts.sh beside $0" >&2; exit 1; }
 . "$here/etchopts.sh"
+# -tile: layouts beyond one window (stitch(1)), beside this script too
+[ -r "$here/tile.sh" ] || { echo "$prog: cannot find tile.sh beside $0" >&2; exit 1; }
+. "$here/tile.sh"
 usage() {
 	cat <<'U'
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
                 [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check]]]
+                [-tile W [-halo H] [-j N] [-tiledir D] [-slurm]]
                 [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
@@ -57,6 +61,7 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -accuracy check  the estimate at the inputs' own grids, no refinement
   -h, --help  this text
 U
+	tile_usage
 	etchopts_usage
 }
 die() { echo "$prog: $*" >&2; exit 1; }
@@ -88,6 +93,7 @@ while [ $# -gt 0 ]; do
 		cutaxis=$2 cutval=$3; shift 3 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
+	-tile|-halo|-j|-tiledir|-slurm) tile_opt "$@"; shift "$tile_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -116,6 +122,8 @@ if [ -n "$measureopts" ]; then
 		{ measure $measureopts /dev/null >/dev/null; exit 2; }
 fi
 
+tile_check
+
 # Check everything before running anything: a bad etch option must not
 # cost a splat and a bleach run and their overwritten outputs.
 [ -z "$splat_in" ] || [ -r "$splat_in" ] || die "$splat_in: cannot read the splat input file"
@@ -137,6 +145,7 @@ fi
 # the resist file is read up front (bleach -check): a mistake in it, such
 # as "develop kimm", is reported before splat runs
 [ -z "$bleach_in" ] || bleach -check "$bleach_in" || exit 1
+[ -z "$tile_w" ] || { tile_run; exit 0; }   # -tile: tile.sh runs and stitches
 
 # -accuracy: splat, bleach, etch and measure level after level (etchopts.sh
 # accuracy_loop), in this directory, so that the files left are those of

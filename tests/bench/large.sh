@@ -30,10 +30,10 @@ trap 'rm -rf "$tmp"' EXIT INT TERM
 # sample3D runs the programs beside it: a copy beside wrappers that time
 # each stage into $tmp/times
 mkdir "$tmp/bin"
-cp "$BUILD/bin/sample3D" "$BUILD/bin/etchopts.sh" "$tmp/bin/"
+cp "$BUILD/bin/sample3D" "$BUILD/bin/etchopts.sh" "$BUILD/bin/tile.sh" "$tmp/bin/"
 for p in "$BUILD"/bin/*; do
 	n=$(basename "$p")
-	case $n in sample3D|etchopts.sh) continue ;; esac
+	case $n in sample3D|etchopts.sh|tile.sh) continue ;; esac
 	printf '#!/bin/sh\nexec /usr/bin/time -a -o "%s" -f "%s %%e %%U %%S %%M" "%s" "$@"\n' \
 		"$tmp/times" "$n" "$p" >"$tmp/bin/$n"
 	chmod +x "$tmp/bin/$n"
