@@ -3,7 +3,9 @@
 # list and print the same usage lines for it; a change of etch's
 # pass-through options is made here once.  See etch(1) for what each does.
 # The two drivers' other shared rules are here too: the engine they
-# measure with by default, and -accuracy (the grid refinement).
+# measure with by default, -accuracy (the grid refinement), and shq/mkq,
+# the quoting of a word for the Makefiles and Slurm scripts fem and
+# sample3D -tile write.
 #
 #   etchopts=""
 #   ... case $1 in
@@ -204,4 +206,15 @@ usage_error() {
 	echo "$prog: $1" >&2
 	echo "$prog: $prog --help prints the usage" >&2
 	exit 2
+}
+
+# A word written into a Makefile or a shell script must reach the command
+# as the one word the driver checked, whatever it holds.
+shq() { # shq WORD: WORD in single quotes for sh (a ' becomes '\'')
+	printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
+}
+mkq() { # mkq WORD: WORD as a make variable's value that expands to shq WORD:
+	# $ becomes $$, and a # with k backslashes before it 2k+1 backslashes
+	# and the # (make's comment escape halves a run of backslashes)
+	shq "$1" | sed 's/\$/$$/g; s/\(\\*\)#/\1\1\\#/g'
 }

@@ -113,14 +113,6 @@ isnum() { # isnum WORD: a decimal number (one line: grep would take any line)
 plainword() { # plainword WHAT WORD: refuse a word that cannot be quoted
 	case $2 in *"$nl"*|*"$(printf '\r')"*) badv "$1: a word with a newline or a carriage return" ;; esac
 }
-shq() { # shq WORD: WORD in single quotes for sh (a ' becomes '\'')
-	printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
-}
-mkq() { # mkq WORD: WORD as a make variable's value that expands to shq WORD:
-	# $ becomes $$, and a # with k backslashes before it 2k+1 backslashes
-	# and the # (make's comment escape halves a run of backslashes)
-	shq "$1" | sed 's/\$/$$/g; s/\(\\*\)#/\1\1\\#/g'
-}
 mkwords() { # mkwords WHAT WORDS: the words (split at blanks) through mkq
 	for w in $2; do plainword "$1" "$w"; printf ' %s' "$(mkq "$w")"; done
 }

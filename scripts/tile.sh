@@ -13,7 +13,7 @@
 # See stitch(1) and sample3D(1), TILES.
 #
 # Every word written into the Makefile and the Slurm scripts goes through
-# shq (sh) or mkq (make and sh), as fem's.
+# shq (sh) or mkq (make and sh), etchopts.sh's quoting.
 
 tile_w="" tile_halo="" tile_jobs=1 tile_slurm="" tile_dir=tiles tile_sbopts=""
 
@@ -46,12 +46,6 @@ tile_opt() {
 	esac
 }
 
-tile_shq() { # tile_shq WORD: WORD in single quotes for sh (a ' becomes '\'')
-	printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
-}
-tile_mkq() { # tile_mkq WORD: WORD as make passes it to sh (as fem's mkq)
-	tile_shq "$1" | sed 's/\$/$$/g; s/\(\\*\)#/\1\1\\#/g'
-}
 tile_posnum() { awk -v v="$1" 'BEGIN { exit !(v + 0 == v && v > 0) }'; }
 
 # tile_check: the -tile options against the rest, before anything runs
@@ -102,12 +96,12 @@ tile_run() {
 	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
 	set -- -q -et "$etchtime" ${printtime:+-pt "$printtime"} $etchopts -no2d
 	eq=""
-	for w in "$@"; do eq="$eq $(tile_mkq "$w")"; done
+	for w in "$@"; do eq="$eq $(mkq "$w")"; done
 	{
 		echo "# The tiles of $splat_in, written by sample3D -tile; make -j N runs them."
 		printf 'SPLAT = %s\nBLEACH = %s\nETCH = %s\nSTITCH = %s\n' \
-			"$(tile_mkq "$(command -v splat)")" "$(tile_mkq "$(command -v bleach)")" \
-			"$(tile_mkq "$(command -v etch)")" "$(tile_mkq "$(command -v stitch)")"
+			"$(mkq "$(command -v splat)")" "$(mkq "$(command -v bleach)")" \
+			"$(mkq "$(command -v etch)")" "$(mkq "$(command -v stitch)")"
 		echo "ETCHOPTS =$eq"
 		echo "all: curves.plot image.cont"
 		for k in $keys; do
@@ -142,7 +136,7 @@ tile_run() {
 		} | tile_put "$tile_dir/tiles.sbatch"
 		{
 			printf '#!/bin/sh\n# Submits the tiles, then their stitching (written by sample3D -tile).\n'
-			printf 'set -eu\ncd %s\nmkdir -p slurm\n' "$(tile_shq "$(cd "$tile_dir" && pwd)")"
+			printf 'set -eu\ncd %s\nmkdir -p slurm\n' "$(shq "$(cd "$tile_dir" && pwd)")"
 			echo 't=$(sbatch --parsable tiles.sbatch)'
 			echo 'sbatch --dependency=afterok:${t%%;*} --output=slurm/stitch.out --wrap "make all"'
 		} | tile_put "$tile_dir/submit.sh"
