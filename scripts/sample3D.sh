@@ -43,8 +43,9 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -hidden     the profile as the thesis' hidden-line mesh (default: shaded)
   -e          the profile with every axis scaled to the same length
   -noe        the profile at true scale (default: z stretched when thin)
-  -cut x|y V  the cross-section picture's plane (default: y mid, the
-              middle of the cell); also written by etch to curves.cut
+  -cut x|y V  the cross-section picture's plane (default: y through the
+              image's row of features, contour -cutrow; y mid without
+              an image); also written by etch to curves.cut
   -last       etch writes only the final set, and the pictures show it
   -q          quiet: no progress lines
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
@@ -92,8 +93,10 @@ while [ $# -gt 0 ]; do
 	esac
 done
 
-# the cross-section through the middle of the cell unless -cut says
-[ -n "$cutaxis" ] || cutaxis=y cutval=mid
+# the cross-section through the middle of the cell unless -cut says (or
+# the image's row of features, chosen once the image is made)
+cutauto=""
+[ -n "$cutaxis" ] || cutaxis=y cutval=mid cutauto=yes
 etchopts="$etchopts -cut $cutaxis $cutval"
 
 [ -n "$splat_in$contour$bleach_in$rate" ] || bad "nothing to do: give -if, -cf with -bf, -rb or -ra"
@@ -195,6 +198,13 @@ if [ -z "$etchtime" ]; then
 	exit 0
 fi
 [ -n "$rate" ] || bad "-et needs an etch-rate file: give -rb, -ra, or -bf"
+# no -cut: the row of the image whose intensity varies most (contour
+# -cutrow), so that the cross-section of an array runs through a row of
+# its features, not between two rows
+if [ -n "$cutauto" ] && [ -n "$contour" ] && [ -z "$accuracy" ]; then
+	cutval=$(contour -cutrow "$contour") || die "contour -cutrow failed"
+	etchopts="${etchopts% -cut y mid} -cut y $cutval"
+fi
 if [ -z "$accuracy" ]; then
 	say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> curves.plot"
 	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
@@ -220,15 +230,20 @@ times=$(etch -et "$etchtime" ${printtime:+-pt "$printtime"} -print-times) ||
 times=$(printf '%s' "$times" | tr '\n' ',')
 look="-walls -shade"
 [ -z "$hidden" ] || look="-walls"
+# the feature: the mask (or image) file, with its folder when it has one
+feature=${splat_in:-${contour:-$rate}}
+case $feature in */*/*) fdir=${feature%/*}; feature=${fdir##*/}/${feature##*/} ;; esac
+# pdraw draws a mesh finer than its pixels shaded in a picture of a
+# bounded size (pdraw -raster), so a large window's profile stays small
 # shellcheck disable=SC2086 # stretch and look are lists of words
 if [ -n "$plot" ]; then
 	say "pdraw curves.plot (interactive) -> profile.ps"
-	pdraw -h $look $stretch -times "$times" -tl "developed resist" \
+	pdraw -h $look $stretch -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 else
 	say "pdraw curves.plot -> profile.ps"
-	pdraw -noplot -h $look $stretch -times "$times" -tl "developed resist" \
+	pdraw -noplot -h $look $stretch -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 fi
@@ -236,12 +251,14 @@ fi
 rm -f dataplot.ps
 ln profile.ps dataplot.ps 2>/dev/null || cp profile.ps dataplot.ps || die "cannot write dataplot.ps"
 if [ "$cutaxis" = y ]; then across=x; else across=y; fi
-if [ "$cutval" = mid ]; then where="through the middle of the cell"; else where="$cutaxis = $cutval um"; fi
+if [ "$cutval" = mid ]; then where="through the middle of the cell"; else where="at $cutaxis = $cutval um"; fi
+[ -z "$cutauto" ] || [ "$cutval" = mid ] || where="$where (the row of features)"
 say "drawplot curves.cut -> cut.ps"
-drawplot -noplot -section -times "$times" -tl "cross-section $where" \
+drawplot -noplot -section -times "$times" -tl "cross-section $where, $feature" \
 	-xl "$across (um)" -yl "z (um)" -psfile cut.ps curves.cut || die "drawplot failed"
 if [ -n "$splat_in" ]; then
+	# an array's many contours are drawn as a grey map (contour -map)
 	say "contour $contour -> image.ps"
-	contour -noplot -tl "aerial image" -xl "x (um)" -yl "y (um)" -psfile image.ps "$contour" ||
-		die "contour failed"
+	contour -noplot -tl "aerial image, $feature" -xl "x (um)" -yl "y (um)" -psfile image.ps \
+		"$contour" || die "contour failed"
 fi

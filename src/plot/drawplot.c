@@ -28,7 +28,7 @@ static const char usage_head[] =
 	"usage: drawplot [-o options-file] [-Pprinter] [-s scale] [-ar] [-clip] [-e] [-g]\n"
 	"                [-l] [-noplot] [-print] [-ps] [-xlog] [-ylog] [-t template-file]\n"
 	"                [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file] [-big]\n"
-	"                [-section [-times t1,t2,...]] [X options] plot-file...\n"
+	"                [-section] [-times t1,t2,...] [X options] plot-file...\n"
 	"  -ar              no automatic axis ranging\n"
 	"  -clip            clip the curves to the plot box\n"
 	"  -e               equal x and y scales\n"
@@ -38,7 +38,8 @@ static const char usage_head[] =
 	"  -t template-file line type, marker and label per curve\n"
 	"  -section         a resist cross-section: all sets on one page, the resist\n"
 	"                   under the last profile filled, the substrate marked\n"
-	"  -times t1,...    with -section: the sets' print times (s), for the legend\n"
+	"  -times t1,...    the sets' print times (s): with -section for the legend,\n"
+	"                   else each page's title ends with its time\n"
 	"  -big             draw plot files whose estimated memory or time (from\n"
 	"                   their size) is beyond the limits (also SAMPLE3D_BIG=1)\n";
 
@@ -64,6 +65,8 @@ struct ctx {
 	struct plot_settings s;
 	int autorange, clip, xlog, ylog, section;
 	struct template *t;
+	double *times;          /* -times without -section: page i's print time */
+	int ntimes;
 	int nfiles;
 	struct plot_file **pf;
 };
@@ -97,8 +100,6 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (o->nfiles == 0)
 		args_error(&a, "no plot-file");
-	if (o->times && !o->section)
-		args_error(&a, "-times goes with -section");
 	if (o->section && (o->xlog || o->ylog))
 		args_error(&a, "-section draws linear axes: not with -xlog or -ylog");
 	args_done(&a, NULL);
@@ -223,6 +224,8 @@ static void legend(struct draw *d, const struct ctx *c, const struct plot_frame 
  * fraction of the box's height, and the greys (0 black, 1 white). */
 #define SECTION_SUBSTRATE 0.15
 #define SECTION_RESIST_GRAY 0.78
+/* -section: z drawn within this fraction of x's scale counts as unstretched */
+#define SECTION_SAME_SCALE 0.02
 #define SECTION_SUBSTRATE_GRAY 0.5
 
 /* One page per file: every set's profile, the resist under the last. */
@@ -271,7 +274,14 @@ static void section_page(struct draw *d, const struct ctx *c, const struct plot_
 		draw_polygon(d, n + 2, xy, SECTION_RESIST_GRAY, 0);
 		free(xy);
 	}
-	plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+	/* the z scale against x's, stated in the z title when it differs */
+	double zs = ((f.y1 - f.y0) / (ya.hi - ya.lo)) / ((f.x1 - f.x0) / (xa.hi - xa.lo));
+	char yl[300];
+	if (c->s.ylabel && *c->s.ylabel && fabs(zs - 1) > SECTION_SAME_SCALE)
+		snprintf(yl, sizeof yl, "%.200s, stretched %.2gx", c->s.ylabel, zs);
+	else
+		snprintf(yl, sizeof yl, "%.250s", c->s.ylabel ? c->s.ylabel : "");
+	plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, yl);
 	for (int si = 0; si < pf->nsets; si++) {
 		int lt, mk;
 		const char *lab;
@@ -309,7 +319,17 @@ static struct draw *render(void *vc)
 			make_axis(&ya, st, 1, c->ylog, c->s.yticks, c->autorange);
 			struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
 			plot_frame_place(&f, d, c->s.equalscale);
-			plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+			/* -times: the page's print time after the title */
+			int page = d->npages ? d->npages - 1 : 0;
+			char title[320];
+			snprintf(title, sizeof title, "%.250s", c->s.toplabel ? c->s.toplabel : "");
+			if (page < c->ntimes) {
+				char tf[NUM_BUFSZ];
+				size_t n = strlen(title);
+				snprintf(title + n, sizeof title - n, "%st = %s s", n ? ", " : "",
+					 num_fmt(tf, c->times[page]));
+			}
+			plot_frame_draw(d, &f, c->s.grid, title, c->s.xlabel, c->s.ylabel);
 			if (c->clip)
 				draw_clip(d, f.x0, f.y0, f.x1, f.y1);
 			for (int i = 0; i < st->ncurves; i++) {
@@ -354,7 +374,17 @@ int main(int argc, char **argv)
 	c.section = o.section;
 	if (c.section)          /* the box as it is: the fill ends at its sides */
 		c.autorange = 0;
-	if (o.times && !c.t) {
+	if (o.times && !c.section) {
+		/* -times: each page's title ends with its print time */
+		char *list = xstrdup(o.times), *save = NULL;
+		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+			c.times = xreallocarray(c.times, (size_t)c.ntimes + 1, sizeof *c.times);
+			if (!num_parse(t, &c.times[c.ntimes]))
+				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
+			c.ntimes++;
+		}
+		free(list);
+	} else if (o.times && !c.t) {
 		/* -section -times: a legend of print times, a line type each */
 		c.t = xcalloc(1, sizeof *c.t);
 		char *list = xstrdup(o.times), *save = NULL;
@@ -394,6 +424,7 @@ int main(int argc, char **argv)
 		fmt_plot_free(c.pf[i]);
 	free(c.pf);
 	fmt_template_free(c.t);
+	free(c.times);
 	fmt_options_free(spec, val);
 	free(o.files);
 	return 0;

@@ -69,6 +69,36 @@ static void xml_text(FILE *f, const char *s)
 	}
 }
 
+/* A DRAW_IMAGE as rectangles, one a run of equal grey along a row (white
+ * runs left out): plain SVG 1.1, no embedded bitmap. */
+static void svg_image(FILE *f, const struct draw_item *e, double yoff, double H)
+{
+	int cols = e->halign, rows = e->valign;
+	const unsigned char *px = (const unsigned char *)e->text;
+	double pw = (e->xy[2] - e->xy[0]) / cols, ph = (e->xy[3] - e->xy[1]) / rows;
+	for (int r = 0; r < rows; r++)
+		for (int i = 0; i < cols;) {
+			const unsigned char *row = px + (size_t)r * (size_t)cols;
+			int n = 1;
+			while (i + n < cols && row[i + n] == row[i])
+				n++;
+			if (row[i] != 255) {
+				fputs("<rect x=\"", f);
+				draw_print_coord(f, e->xy[0] + i * pw);
+				fputs("\" y=\"", f);
+				draw_print_coord(f, yoff + H - e->xy[3] + r * ph);
+				fputs("\" width=\"", f);
+				draw_print_coord(f, n * pw);
+				fputs("\" height=\"", f);
+				draw_print_coord(f, ph);
+				fputs("\" fill=\"", f);
+				gray_color(f, row[i] / 255.0);
+				fputs("\"/>\n", f);
+			}
+			i += n;
+		}
+}
+
 void draw_write_svg(const struct draw *d, const char *path)
 {
 	struct aout *a = aout_open(path);
@@ -151,6 +181,9 @@ void draw_write_svg(const struct draw *d, const char *path)
 			draw_print_coord(f, e->xy[3] - e->xy[1]);
 			fprintf(f, "\"/></clipPath>\n<g clip-path=\"url(#c%d)\">\n", clipid);
 			inclip = 1;
+			break;
+		case DRAW_IMAGE:
+			svg_image(f, e, yoff, H);
 			break;
 		case DRAW_UNCLIP:
 			if (inclip)
