@@ -28,7 +28,8 @@ usage() {
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
-                [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check]]]
+                [-cut x|y VALUE|mid] [-last] [-pwindow X0 X1 Y0 Y1|all]
+                [-measure "ARGS" [-accuracy [P|check]]]
                 [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
@@ -47,6 +48,8 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
               image's row of features, contour -cutrow; y mid without
               an image); also written by etch to curves.cut
   -last       etch writes only the final set, and the pictures show it
+  -pwindow X0 X1 Y0 Y1|all  the part of the window profile.ps shows (um;
+              default: the central 6 x 6 um of a window wider than 12 um)
   -q          quiet: no progress lines
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
               and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0";
@@ -67,7 +70,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
 printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
-cutaxis="" cutval="" measureopts="" last="" accuracy=""
+cutaxis="" cutval="" measureopts="" last="" accuracy="" pwindow="-window auto"
 while [ $# -gt 0 ]; do
 	case $1 in
 	-h|--help) usage; exit 0 ;;
@@ -88,6 +91,13 @@ while [ $# -gt 0 ]; do
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		cutaxis=$2 cutval=$3; shift 3 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
+	-pwindow) if [ "${2:-}" = all ]; then pwindow="" && shift 2
+		else [ $# -ge 5 ] || bad "option -pwindow needs x0 x1 y0 y1 or all"
+			for v in "$2" "$3" "$4" "$5"; do
+				case $v in ''|*[!0-9.eE+-]*) bad "-pwindow: \"$v\" is not a number" ;; esac
+			done
+			pwindow="-window $2 $3 $4 $5"; shift 5
+		fi ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
@@ -235,15 +245,15 @@ feature=${splat_in:-${contour:-$rate}}
 case $feature in */*/*) fdir=${feature%/*}; feature=${fdir##*/}/${feature##*/} ;; esac
 # pdraw draws a mesh finer than its pixels shaded in a picture of a
 # bounded size (pdraw -raster), so a large window's profile stays small
-# shellcheck disable=SC2086 # stretch and look are lists of words
+# shellcheck disable=SC2086 # stretch, look and pwindow are lists of words
 if [ -n "$plot" ]; then
 	say "pdraw curves.plot (interactive) -> profile.ps"
-	pdraw -h $look $stretch -times "$times" -tl "developed resist, $feature" \
+	pdraw -h $look $stretch $pwindow -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 else
 	say "pdraw curves.plot -> profile.ps"
-	pdraw -noplot -h $look $stretch -times "$times" -tl "developed resist, $feature" \
+	pdraw -noplot -h $look $stretch $pwindow -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 fi

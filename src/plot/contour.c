@@ -405,6 +405,7 @@ static int label_curve(struct draw *d, const struct plot_frame *f, struct placed
 #define MAP_PIXELS 1000
 #define BAR_W 200.0
 #define BAR_H 10.0
+#define BAR_FONT 10.0   /* the size of the axes' tick labels */
 
 /* The grey of value v on the page's scale: black at zmin, white at zmax. */
 static unsigned char map_gray(const struct ctx *c, double v)
@@ -454,7 +455,7 @@ static void draw_scale_bar(struct draw *d, const struct ctx *c, const struct plo
 	for (int k = 0; k < ax.nticks; k++) {
 		double x = cx - BAR_W / 2 + BAR_W * (ax.tick[k] - ax.lo) / (ax.hi - ax.lo);
 		draw_segment(d, x, y0, x, y0 - 3);
-		draw_text(d, x, y0 - 4, LABEL_FONT, 0, DRAW_CENTER, DRAW_TOP, ax.label[k]);
+		draw_text(d, x, y0 - 4, BAR_FONT, 0, DRAW_CENTER, DRAW_TOP, ax.label[k]);
 	}
 }
 

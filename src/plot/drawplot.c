@@ -28,7 +28,7 @@ static const char usage_head[] =
 	"usage: drawplot [-o options-file] [-Pprinter] [-s scale] [-ar] [-clip] [-e] [-g]\n"
 	"                [-l] [-noplot] [-print] [-ps] [-xlog] [-ylog] [-t template-file]\n"
 	"                [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file] [-big]\n"
-	"                [-section] [-times t1,t2,...] [X options] plot-file...\n"
+	"                [-section] [-times t1,t2,...] [-fill] [X options] plot-file...\n"
 	"  -ar              no automatic axis ranging\n"
 	"  -clip            clip the curves to the plot box\n"
 	"  -e               equal x and y scales\n"
@@ -38,6 +38,7 @@ static const char usage_head[] =
 	"  -t template-file line type, marker and label per curve\n"
 	"  -section         a resist cross-section: all sets on one page, the resist\n"
 	"                   under the last profile filled, the substrate marked\n"
+	"  -fill            closed curves (last point the first) filled light grey\n"
 	"  -times t1,...    the sets' print times (s): with -section for the legend,\n"
 	"                   else each page's title ends with its time\n"
 	"  -big             draw plot files whose estimated memory or time (from\n"
@@ -55,7 +56,7 @@ static const struct opt_spec spec[] = {
 
 struct options {
 	struct plot_cmd cmd;
-	int noauto, clip, equal, grid, xlog, ylog, section;
+	int noauto, clip, equal, grid, xlog, ylog, section, fill;
 	const char *templ, *times;
 	int nfiles;
 	char **files;
@@ -63,7 +64,7 @@ struct options {
 
 struct ctx {
 	struct plot_settings s;
-	int autorange, clip, xlog, ylog, section;
+	int autorange, clip, xlog, ylog, section, fill;
 	struct template *t;
 	double *times;          /* -times without -section: page i's print time */
 	int ntimes;
@@ -93,6 +94,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-ylog")) o->ylog = 1;
 		else if (args_str(&a, "-t", &o->templ)) ;
 		else if (args_flag(&a, "-section")) o->section = 1;
+		else if (args_flag(&a, "-fill")) o->fill = 1;
 		else if (args_str(&a, "-times", &o->times)) ;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_LANDSCAPE | PC_XDISPLAY | PC_BIG)) ;
 		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
@@ -292,6 +294,27 @@ static void section_page(struct draw *d, const struct ctx *c, const struct plot_
 	legend(d, c, &f, pf->nsets);
 }
 
+/* -fill: the closed curves of a set (a region's outline) filled light
+ * grey under every curve's line, so the region reads as an area even
+ * where its outline runs along the frame. */
+#define FILL_GRAY 0.85
+static void fill_closed(struct draw *d, const struct plot_frame *f, const struct plot_set *st)
+{
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		int n = cv->npts;
+		if (n < 4 || cv->p[0] != cv->p[2 * (n - 1)] || cv->p[1] != cv->p[2 * (n - 1) + 1])
+			continue;
+		double *xy = xreallocarray(NULL, (size_t)n, 2 * sizeof *xy);
+		int m = 0;
+		for (int k = 0; k < n - 1; k++)
+			if (plot_frame_map(f, cv->p[2 * k], cv->p[2 * k + 1], &xy[2 * m], &xy[2 * m + 1]))
+				m++;
+		draw_polygon(d, m, xy, FILL_GRAY, 0);
+		free(xy);
+	}
+}
+
 static struct draw *render(void *vc)
 {
 	const struct ctx *c = vc;
@@ -332,6 +355,8 @@ static struct draw *render(void *vc)
 			plot_frame_draw(d, &f, c->s.grid, title, c->s.xlabel, c->s.ylabel);
 			if (c->clip)
 				draw_clip(d, f.x0, f.y0, f.x1, f.y1);
+			if (c->fill)
+				fill_closed(d, &f, st);
 			for (int i = 0; i < st->ncurves; i++) {
 				int lt, mk;
 				const char *lab;
@@ -372,6 +397,7 @@ int main(int argc, char **argv)
 	if (tf)
 		c.t = fmt_template_read(tf);
 	c.section = o.section;
+	c.fill = o.fill;
 	if (c.section)          /* the box as it is: the fill ends at its sides */
 		c.autorange = 0;
 	if (o.times && !c.section) {

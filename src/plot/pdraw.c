@@ -33,7 +33,7 @@
 static const char usage_head[] =
 	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e]\n"
 	"             [-zs factor|auto] [-times t1,t2,...] [-h [-walls] [-shade]]\n"
-	"             [-raster|-vector] [-window x0 x1 y0 y1]\n"
+	"             [-raster|-vector] [-window x0 x1 y0 y1|auto]\n"
 	"             [-nosort] [-noplot] [-print] [-ps] [-big] [-tl toplabel] [-xl xlabel]\n"
 	"             [-yl ylabel] [-zl zlabel] [-svg file] [X options] plotfile...\n"
 	"  -v vx vy vz      eye position (view vector), default -1 -2 1.5\n"
@@ -52,6 +52,8 @@ static const char usage_head[] =
 	"  -vector          with -h: polygons and lines however small they are\n"
 	"  -window x0 x1 y0 y1  draw only the part of the data inside x0..x1, y0..y1\n"
 	"                   (um), cut at its edges (with -walls, walls there)\n"
+	"  -window auto     the central 6 x 6 um of data wider than 12 um (a large\n"
+	"                   mask), the title saying so; smaller data whole\n"
 	"  -big             draw plot files whose estimated memory or time (from\n"
 	"                   their size) is beyond the limits (also SAMPLE3D_BIG=1)\n"
 	"  -zl zlabel       z label\n"
@@ -90,7 +92,7 @@ struct options {
 	int shade;          /* -shade */
 	int raster;         /* -raster 1, -vector -1, else 0 (by the polygons' size) */
 	double win[4];      /* -window x0 x1 y0 y1 */
-	int haswin;
+	int haswin;         /* 1 for a window, 2 for -window auto */
 	const char *times;  /* -times list */
 	int nfiles;
 	char **files;
@@ -106,6 +108,7 @@ struct ctx {
 	int raster;         /* as in struct options */
 	double win[4];
 	int haswin;
+	char winnote[96];   /* -window auto: what the title adds, or "" */
 	double *times;      /* -times: page i's print time */
 	int ntimes;
 	int nsets;
@@ -152,6 +155,11 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-shade")) o->shade = 1;
 		else if (args_flag(&a, "-raster")) o->raster = 1;
 		else if (args_flag(&a, "-vector")) o->raster = -1;
+		else if (a.i + 1 < argc && strcmp(s, "-window") == 0 &&
+			 strcmp(argv[a.i + 1], "auto") == 0) {
+			o->haswin = 2;
+			a.i += 2;
+		}
 		else if (args_flag(&a, "-window")) {
 			for (int k = 0; k < 4; k++) {
 				if (a.i >= argc || !num_parse(argv[a.i], &o->win[k])) {
@@ -761,7 +769,11 @@ static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set 
 	struct view vw;
 	make_view(&vw, c, box);
 	char title[320];
-	snprintf(title, sizeof title, "%.250s", c->s.toplabel ? c->s.toplabel : "");
+	snprintf(title, sizeof title, "%.200s", c->s.toplabel ? c->s.toplabel : "");
+	if (*c->winnote) {
+		size_t n = strlen(title);
+		snprintf(title + n, sizeof title - n, "%s%s", n ? ", " : "", c->winnote);
+	}
 	if (page < c->ntimes) {
 		char f[NUM_BUFSZ];
 		size_t n = strlen(title);
@@ -817,6 +829,30 @@ static struct draw *render(void *vc)
 		draw_set(d, c, c->sets[i], i);
 	}
 	return d;
+}
+
+/* -window auto: data wider than AUTO_WIDE (um) on either side, a large
+ * mask, is drawn in its central AUTO_SIDE x AUTO_SIDE um: a few features
+ * of an array (6 x 6 contacts of a 1 um pitch), large enough to see each
+ * feature's shape on a slide; the first set's box decides for every page. */
+#define AUTO_WIDE 12.0
+#define AUTO_SIDE 6.0
+static void auto_window(struct ctx *c)
+{
+	double box[6];
+	set_box(c->sets[0], box);
+	c->haswin = 0;
+	if (!(box[1] - box[0] > AUTO_WIDE) && !(box[3] - box[2] > AUTO_WIDE))
+		return;
+	for (int k = 0; k < 2; k++) {
+		double m = (box[2 * k] + box[2 * k + 1]) / 2, h = AUTO_SIDE / 2;
+		c->win[2 * k] = fmax(box[2 * k], m - h);
+		c->win[2 * k + 1] = fmin(box[2 * k + 1], m + h);
+	}
+	char a[NUM_BUFSZ], b[NUM_BUFSZ];
+	snprintf(c->winnote, sizeof c->winnote, "the central %s x %s um",
+		 num_fmt(a, c->win[1] - c->win[0]), num_fmt(b, c->win[3] - c->win[2]));
+	c->haswin = 1;
 }
 
 /* ---- keys (the guide's H J K L O A S D F Z Y X) ---- */
@@ -908,6 +944,8 @@ int main(int argc, char **argv)
 	}
 
 	struct plot_file *winpf = NULL;
+	if (c.haswin == 2 && c.nsets > 0)
+		auto_window(&c);
 	if (c.haswin) {         /* the sets cut to the window replace the sets read */
 		winpf = plot_window_sets(c.sets, c.nsets, c.win);
 		for (int s = 0; s < c.nsets; s++)

@@ -9,7 +9,8 @@
 # coarse mesh (a 20 x 20 grid) stays vector by default.  -window 0 1 0 1
 # cuts the sets to that square: its x ticks end at 1 (the data's at 3),
 # a window holding none of the data is an empty page, not an error, and
-# an empty window is a usage error.
+# an empty window is a usage error.  -window auto draws the central 6 x 6
+# um of a 20 um sheet (its title says so) and a 3 um box whole.
 . "$TOP/tests/lib/common.sh"
 mesh() { # mesh N: the bump as 2 N^2 triangles
 	awk -v n="$1" 'function z(i, j) { return 0.2 * cos((i / n - 0.5) * 3.14159) * cos((j / n - 0.5) * 3.14159) }
@@ -42,4 +43,14 @@ pdraw -noplot -h -window 1 0 0 1 coarse.3D </dev/null >/dev/null 2>err.txt
 [ $? -eq 2 ] || fail "-window 1 0 0 1: not a usage error"
 grep -q '^pdraw: option -window: x0 x1 y0 y1 with x0 < x1 and y0 < y1' err.txt ||
 	fail "-window 1 0 0 1: $(head -n 1 err.txt)"
+# -window auto: a 20 x 20 um sheet is drawn in its central 6 x 6 um, the
+# title saying so and the x ticks ending at +-2 (-3..3 by 2s); the 3 x 3
+# um bump whole
+awk 'BEGIN { print "-10 10 -10 10 0 0.3"; print 1; print 5
+	print -10, -10, 0.3; print 10, -10, 0.3; print 10, 10, 0.3; print -10, 10, 0.3; print -10, -10, 0.3 }' >big.3D
+pdraw -noplot -h -window auto -tl sheet -psfile big.ps big.3D </dev/null || fail "-window auto"
+grep -q '^(sheet, the central 6 x 6 um) ' big.ps || fail "-window auto: no title of the central 6 x 6 um"
+! grep -q '^(-\{0,1\}10) ' big.ps || fail "-window auto: ticks at +-10"
+pdraw -noplot -h -window auto -tl bump -psfile small.ps coarse.3D </dev/null || fail "-window auto, small"
+grep -q '^(bump) ' small.ps || fail "-window auto cut a 3 um box"
 gs_check fine.ps
