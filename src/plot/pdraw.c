@@ -548,9 +548,15 @@ static void paint_frag(void *pctx, const struct plot_frag *f)
  * Only the floor edge is stroked, and the vertical edges at the box's
  * corners, so the wall does not show the mesh. */
 #define WALL_GRAY 0.82
+/* A border node counts as on a side within this fraction of the box's
+ * width (0.5 nm on a 5 um cell, far below a pixel): a node a hair inside
+ * the side, as etch's clipping once left them, failed a tighter test, its
+ * two edges got no wall and the page showed through as a white slit down
+ * the block's face. */
+#define WALL_SNAP 1e-4
 static int on_side(const double *p, const double *box, int k)
 {
-	double eps = 1e-9 * (box[2 * k + 1] - box[2 * k]);
+	double eps = WALL_SNAP * (box[2 * k + 1] - box[2 * k]);
 	if (fabs(p[k] - box[2 * k]) <= eps)
 		return 1;
 	if (fabs(p[k] - box[2 * k + 1]) <= eps)

@@ -10,7 +10,8 @@
 # cuts the sets to that square: its x ticks end at 1 (the data's at 3),
 # a window holding none of the data is an empty page, not an error, and
 # an empty window is a usage error.  -window auto draws the central 6 x 6
-# um of a 20 um sheet (its title says so) and a 3 um box whole.
+# um of a 20 um sheet (its title says so) and a 3 um box whole.  -walls
+# puts a wall under an edge whose node is 1e-6 um inside the side.
 . "$TOP/tests/lib/common.sh"
 mesh() { # mesh N: the bump as 2 N^2 triangles
 	awk -v n="$1" 'function z(i, j) { return 0.2 * cos((i / n - 0.5) * 3.14159) * cos((j / n - 0.5) * 3.14159) }
@@ -53,4 +54,11 @@ grep -q '^(sheet, the central 6 x 6 um) ' big.ps || fail "-window auto: no title
 ! grep -q '^(-\{0,1\}10) ' big.ps || fail "-window auto: ticks at +-10"
 pdraw -noplot -h -window auto -tl bump -psfile small.ps coarse.3D </dev/null || fail "-window auto, small"
 grep -q '^(bump) ' small.ps || fail "-window auto cut a 3 um box"
+# -walls: a sheet whose corner node lies 1e-6 um inside the side x = 0
+# (etch's clipping once left such nodes) still gets its four walls (0.82
+# grey fills), not three and a white slit
+awk 'BEGIN { print "0 3 0 3 0 0.3"; print 1; print 5
+	print 0, 0, 0.3; print 3, 0, 0.3; print 3, 3, 0.3; print 0.000001, 3, 0.3; print 0, 0, 0.3 }' >hair.3D
+pdraw -noplot -h -walls -vector -psfile hair.ps hair.3D </dev/null || fail "-walls, a node a hair inside"
+[ "$(grep -c ' 0.82 F' hair.ps)" -eq 4 ] || fail "-walls: $(grep -c ' 0.82 F' hair.ps) walls, not 4"
 gs_check fine.ps
