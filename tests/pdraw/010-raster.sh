@@ -4,7 +4,8 @@
 # that the PostScript holds one image (RunLengthDecode) and no polygon of
 # the mesh (fewer than 100 fill operators: the axes and walls are not
 # filled), is under 1 MB (a polygon per triangle wrote 18 MB), is the
-# same byte for byte when drawn again, and that ghostscript renders it;
+# same byte for byte when drawn again, that its SVG embeds one PNG (under
+# 2 MB), and that ghostscript renders it;
 # -vector draws the polygons instead (more than 100000 fills), and a
 # coarse mesh (a 20 x 20 grid) stays vector by default.  -window 0 1 0 1
 # cuts the sets to that square: its x ticks end at 1 (the data's at 3),
@@ -29,8 +30,12 @@ pdraw -noplot -h -walls -psfile fine.ps fine.3D </dev/null || fail "pdraw -h fin
 nf=$(grep -c ' F' fine.ps || true)
 [ "$nf" -lt 100 ] || fail "fine mesh: $nf fills beside the picture"
 [ "$(wc -c <fine.ps)" -lt 1000000 ] || fail "fine mesh: $(wc -c <fine.ps) bytes"
-pdraw -noplot -h -walls -psfile again.ps fine.3D </dev/null || fail "pdraw -h fine, again"
+pdraw -noplot -h -walls -psfile again.ps -svg fine.svg fine.3D </dev/null || fail "pdraw -h fine, again"
 same fine.ps again.ps
+# the SVG embeds the picture as one PNG (its signature, base64 iVBORw0KGgo)
+[ "$(grep -c 'xlink:href="data:image/png;base64,iVBORw0KGgo' fine.svg)" -eq 1 ] ||
+	fail "fine mesh: the SVG holds no PNG picture"
+[ "$(wc -c <fine.svg)" -lt 2000000 ] || fail "fine mesh: the SVG has $(wc -c <fine.svg) bytes"
 pdraw -noplot -h -vector -psfile vec.ps fine.3D </dev/null || fail "pdraw -h -vector"
 [ "$(grep -c ' F' vec.ps)" -gt 100000 ] || fail "-vector: the polygons are not drawn"
 ! grep -q RunLengthDecode vec.ps || fail "-vector drew a picture"
