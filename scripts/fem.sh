@@ -116,6 +116,16 @@ plainword() { # plainword WHAT WORD: refuse a word that cannot be quoted
 mkwords() { # mkwords WHAT WORDS: the words (split at blanks) through mkq
 	for w in $2; do plainword "$1" "$w"; printf ' %s' "$(mkq "$w")"; done
 }
+cd_height() { # cd_height MEASURE-WORDS: the height of measure's first CD, in words
+	while [ $# -gt 0 ]; do
+		case $1 in
+		-rel) [ $# -lt 2 ] || { echo "${2%%,*} % of the resist's height"; return; } ;;
+		-at) [ $# -lt 2 ] || { echo "z = ${2%%,*} um"; return; } ;;
+		esac
+		shift
+	done
+	echo "measure's first height"
+}
 posnum() { isnum "$1" && awk -v v="$1" 'BEGIN { exit !(v > 0) }'; }
 
 # the programs: beside this script first ($here), then PATH
@@ -441,6 +451,9 @@ S
 	printf 'DRAWPLOT = %s\n' "$(mkq "$DRAWPLOT")"
 	printf 'ETCHOPTS = %s\n' "$etchq"
 	printf 'MEASUREARGS =%s\n' "$measureq"
+	# the Bossung curves' title names the height their CD is read at
+	# shellcheck disable=SC2086 # the measure options are words on purpose
+	printf 'BOSSUNGTITLE = %s\n' "$(mkq "Bossung curves: CD at $(cd_height $margs) against focus")"
 	# -accuracy: the grids of the points and of their coarse solves
 	if [ -n "$accuracy" ]; then
 		# shellcheck disable=SC2086 # two grids of three words on purpose
@@ -521,15 +534,15 @@ S
 	done; done
 	printf ' || st=$$?; \\\n'
 	printf '\t[ -s fem.dat ] || exit 1; \\\n'
-	printf '\t$(DRAWPLOT) -noplot -t bossung.tpl -tl "Bossung curves: cd against focus" \\\n'
-	printf '\t  -xl "focus (um)" -yl "cd (um)" -svg bossung.svg bossung.2D && mv -f dataplot.ps bossung.ps || exit 1; \\\n'
+	printf '\t$(DRAWPLOT) -noplot -t bossung.tpl -tl $(BOSSUNGTITLE) \\\n'
+	printf '\t  -xl "focus (um)" -yl "CD (um)" -svg bossung.svg bossung.2D && mv -f dataplot.ps bossung.ps || exit 1; \\\n'
 	printf '\tif [ -n "$(TARGET)" ]; then \\\n'
 	printf '\t  $(FEMWIN) -target $(TARGET) -tol $(TOL) -o window.dat -plot window.2D \\\n'
 	printf '\t    -region region.2D -region-template region.tpl fem.dat || exit 1; \\\n'
 	printf '\t  $(DRAWPLOT) -noplot -tl "process window: cd $(TARGET) um +- $(TOL) %%" \\\n'
 	printf '\t    -xl "exposure latitude (%%)" -yl "depth of focus (um)" -svg window.svg window.2D && \\\n'
 	printf '\t    mv -f dataplot.ps window.ps || exit 1; \\\n'
-	printf '\t  $(DRAWPLOT) -noplot -t region.tpl -tl "in spec: cd $(TARGET) um +- $(TOL) %%" \\\n'
+	printf '\t  $(DRAWPLOT) -noplot -fill -t region.tpl -tl "in spec: CD $(TARGET) um +- $(TOL) %%" \\\n'
 	printf '\t    -xl "focus (um)" -yl "dose (mJ/cm2)" -svg region.svg region.2D && \\\n'
 	printf '\t    mv -f dataplot.ps region.ps || exit 1; \\\n'
 	printf '\telse rm -f window.dat window.2D window.ps window.svg region.2D region.tpl region.ps region.svg; \\\n'

@@ -92,9 +92,19 @@ say "etch2d -method $method for ${etchtime}s${printtime:+, printing every ${prin
 # shellcheck disable=SC2086 # e2opts is a list of words on purpose
 etch2d -et "$etchtime" ${printtime:+-pt "$printtime"} -method "$method" $e2opts \
 	-o profile.plot rval.2D.binary || die "etch2d failed; stopping"
+# one page per print time, titled with the cut and its time (the print
+# times as etch2d takes them: etch -print-times shares its rule)
+times=$(etch -et "$etchtime" ${printtime:+-pt "$printtime"} -print-times) ||
+	die "etch -print-times failed"
+times=$(printf '%s' "$times" | tr '\n' ',')
+# shellcheck disable=SC2086 # $cut is four numbers on purpose
+set -- $cut
+title="resist profile along ($1, $2) - ($3, $4) um, ${splat_in##*/}"
 if [ -n "$plot" ]; then
-	drawplot -e -psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
+	drawplot -e -times "$times" -tl "$title" -xl "distance along the cut (um)" -yl "z (um)" \
+		-psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
 else
 	say "drawplot profile.plot -> profile2D.ps"
-	drawplot -noplot -e -psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
+	drawplot -noplot -e -times "$times" -tl "$title" -xl "distance along the cut (um)" \
+		-yl "z (um)" -psfile profile2D.ps profile.plot </dev/null || die "drawplot failed"
 fi

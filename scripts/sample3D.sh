@@ -31,7 +31,8 @@ usage() {
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
-                [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check]]]
+                [-cut x|y VALUE|mid] [-last] [-pwindow X0 X1 Y0 Y1|all]
+                [-measure "ARGS" [-accuracy [P|check]]]
                 [-tile W [-halo H] [-j N] [-tiledir D] [-slurm]]
                 [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
@@ -47,9 +48,12 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
   -hidden     the profile as the thesis' hidden-line mesh (default: shaded)
   -e          the profile with every axis scaled to the same length
   -noe        the profile at true scale (default: z stretched when thin)
-  -cut x|y V  the cross-section picture's plane (default: y mid, the
-              middle of the cell); also written by etch to curves.cut
+  -cut x|y V  the cross-section picture's plane (default: y through the
+              image's row of features, contour -cutrow; y mid without
+              an image); also written by etch to curves.cut
   -last       etch writes only the final set, and the pictures show it
+  -pwindow X0 X1 Y0 Y1|all  the part of the window profile.ps shows (um;
+              default: the central 6 x 6 um of a window wider than 12 um)
   -q          quiet: no progress lines
   -measure "ARGS"  after etch, measure ARGS on the final set of curves.plot
               and print the table, e.g. -measure "-rel 10,50,90 -hole 0 0";
@@ -71,7 +75,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 splat_in="" contour="" bleach_in="" solid="" ascii="" rate="" etchtime=""
 printtime="" plot="" hidden="" quiet="" etchopts="" stretch="-zs auto"
-cutaxis="" cutval="" measureopts="" last="" accuracy=""
+cutaxis="" cutval="" measureopts="" last="" accuracy="" pwindow="-window auto"
 while [ $# -gt 0 ]; do
 	case $1 in
 	-h|--help) usage; exit 0 ;;
@@ -92,14 +96,23 @@ while [ $# -gt 0 ]; do
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		cutaxis=$2 cutval=$3; shift 3 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
+	-pwindow) if [ "${2:-}" = all ]; then pwindow="" && shift 2
+		else [ $# -ge 5 ] || bad "option -pwindow needs x0 x1 y0 y1 or all"
+			for v in "$2" "$3" "$4" "$5"; do
+				case $v in ''|*[!0-9.eE+-]*) bad "-pwindow: \"$v\" is not a number" ;; esac
+			done
+			pwindow="-window $2 $3 $4 $5"; shift 5
+		fi ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
 	-tile|-halo|-j|-tiledir|-slurm) tile_opt "$@"; shift "$tile_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
 
-# the cross-section through the middle of the cell unless -cut says
-[ -n "$cutaxis" ] || cutaxis=y cutval=mid
+# the cross-section through the middle of the cell unless -cut says (or
+# the image's row of features, chosen once the image is made)
+cutauto=""
+[ -n "$cutaxis" ] || cutaxis=y cutval=mid cutauto=yes
 etchopts="$etchopts -cut $cutaxis $cutval"
 
 [ -n "$splat_in$contour$bleach_in$rate" ] || bad "nothing to do: give -if, -cf with -bf, -rb or -ra"
@@ -204,6 +217,13 @@ if [ -z "$etchtime" ]; then
 	exit 0
 fi
 [ -n "$rate" ] || bad "-et needs an etch-rate file: give -rb, -ra, or -bf"
+# no -cut: the row of the image whose intensity varies most (contour
+# -cutrow), so that the cross-section of an array runs through a row of
+# its features, not between two rows
+if [ -n "$cutauto" ] && [ -n "$contour" ] && [ -z "$accuracy" ]; then
+	cutval=$(contour -cutrow "$contour") || die "contour -cutrow failed"
+	etchopts="${etchopts% -cut y mid} -cut y $cutval"
+fi
 if [ -z "$accuracy" ]; then
 	say "etch $rate for ${etchtime}s${printtime:+, printing every ${printtime}s} -> curves.plot"
 	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
@@ -229,15 +249,20 @@ times=$(etch -et "$etchtime" ${printtime:+-pt "$printtime"} -print-times) ||
 times=$(printf '%s' "$times" | tr '\n' ',')
 look="-walls -shade"
 [ -z "$hidden" ] || look="-walls"
-# shellcheck disable=SC2086 # stretch and look are lists of words
+# the feature: the mask (or image) file, with its folder when it has one
+feature=${splat_in:-${contour:-$rate}}
+case $feature in */*/*) fdir=${feature%/*}; feature=${fdir##*/}/${feature##*/} ;; esac
+# pdraw draws a mesh finer than its pixels shaded in a picture of a
+# bounded size (pdraw -raster), so a large window's profile stays small
+# shellcheck disable=SC2086 # stretch, look and pwindow are lists of words
 if [ -n "$plot" ]; then
 	say "pdraw curves.plot (interactive) -> profile.ps"
-	pdraw -h $look $stretch -times "$times" -tl "developed resist" \
+	pdraw -h $look $stretch $pwindow -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 else
 	say "pdraw curves.plot -> profile.ps"
-	pdraw -noplot -h $look $stretch -times "$times" -tl "developed resist" \
+	pdraw -noplot -h $look $stretch $pwindow -times "$times" -tl "developed resist, $feature" \
 		-xl "x (um)" -yl "y (um)" -zl "z (um)" -psfile profile.ps curves.plot ||
 		die "pdraw failed"
 fi
@@ -245,12 +270,14 @@ fi
 rm -f dataplot.ps
 ln profile.ps dataplot.ps 2>/dev/null || cp profile.ps dataplot.ps || die "cannot write dataplot.ps"
 if [ "$cutaxis" = y ]; then across=x; else across=y; fi
-if [ "$cutval" = mid ]; then where="through the middle of the cell"; else where="$cutaxis = $cutval um"; fi
+if [ "$cutval" = mid ]; then where="through the middle of the cell"; else where="at $cutaxis = $cutval um"; fi
+[ -z "$cutauto" ] || [ "$cutval" = mid ] || where="$where (the row of features)"
 say "drawplot curves.cut -> cut.ps"
-drawplot -noplot -section -times "$times" -tl "cross-section $where" \
+drawplot -noplot -section -times "$times" -tl "cross-section $where, $feature" \
 	-xl "$across (um)" -yl "z (um)" -psfile cut.ps curves.cut || die "drawplot failed"
 if [ -n "$splat_in" ]; then
+	# an array's many contours are drawn as a grey map (contour -map)
 	say "contour $contour -> image.ps"
-	contour -noplot -tl "aerial image" -xl "x (um)" -yl "y (um)" -psfile image.ps "$contour" ||
-		die "contour failed"
+	contour -noplot -tl "aerial image, $feature" -xl "x (um)" -yl "y (um)" -psfile image.ps \
+		"$contour" || die "contour failed"
 fi

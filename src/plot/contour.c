@@ -32,6 +32,7 @@ static const char usage_head[] =
 	"usage: contour [-o options-file] [-Pprinter] [-s scale] [-c level] [-cstep step]\n"
 	"               [-ex] [-g] [-j high|low] [-l] [-noplot] [-print] [-ps] [-old]\n"
 	"               [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file] [-3D [-big]]\n"
+	"               [-map|-nomap] [-cutrow]\n"
 	"               [X options] contour-file\n"
 	"  -c level         only the contours at level, also written to image.cont\n"
 	"  -cstep step      contour step (else asked at a terminal, else ~10 round levels)\n"
@@ -39,6 +40,14 @@ static const char usage_head[] =
 	"  -g               draw a grid\n"
 	"  -j high|low      join curves along the border (border at max or min z)\n"
 	"  -l               no contour labels\n"
+	"  -map             the image as a grey-scale map (black low, white high) under\n"
+	"                   its contours, with a scale bar, and no contour labels (the\n"
+	"                   default when a page has more than 100 contour curves: an\n"
+	"                   array of features)\n"
+	"  -nomap           contours and labels however many curves there are\n"
+	"  -cutrow          print the y (um) of the grid row whose values vary most\n"
+	"                   (of equals the one nearest the middle) and draw nothing:\n"
+	"                   a cross-section there runs through a row of features\n"
 	"  -old             old 50x50 contour-file format\n"
 	"  -3D              the input is a pdraw file of triangles\n"
 	"  -big             with -3D: read a file whose estimated memory or time (from\n"
@@ -64,6 +73,8 @@ struct options {
 	struct plot_cmd cmd;
 	double level, cstep;
 	int has_level, has_cstep, ex, grid, nolabel, old, tri;
+	int map;                /* -map 1, -nomap -1, else 0 (by the curve count) */
+	int cutrow;             /* -cutrow */
 	const char *join;
 	const char *input;
 };
@@ -78,6 +89,7 @@ struct curve {
 
 struct page {
 	char *label;            /* top label of an image stack's page, or NULL */
+	const struct contour *grid;     /* the page's image, NULL for -3D */
 	double bounds[4];
 	int ncurves;
 	struct curve *c;
@@ -86,6 +98,8 @@ struct page {
 struct ctx {
 	struct plot_settings s;
 	int contlabel, linetypes;
+	int map;                /* as in struct options */
+	double zmin, zmax;      /* over every page: one grey scale for all */
 	int nlevels;
 	double *levels;
 	int npages;
@@ -110,6 +124,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 				args_error(&a, "option -j: expected high or low, found \"%.40s\"", o->join);
 		}
 		else if (args_flag(&a, "-l")) o->nolabel = 1;
+		else if (args_flag(&a, "-map")) o->map = 1;
+		else if (args_flag(&a, "-nomap")) o->map = -1;
+		else if (args_flag(&a, "-cutrow")) o->cutrow = 1;
 		else if (args_flag(&a, "-old")) o->old = 1;
 		else if (args_flag(&a, "-3D") || args_flag(&a, "-3d")) o->tri = 1;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_XDISPLAY | PC_BIG)) ;
@@ -335,15 +352,111 @@ static int make_levels(double zmin, double zmax, double step, double **out)
 
 /* ---- drawing ---- */
 
-static void label_at(struct draw *d, double x, double y, double v)
+/* The label boxes placed on a page, so that no label is drawn over
+ * another: a curve whose every candidate place is taken goes without. */
+struct placed {
+	int n, cap;
+	double *box;            /* x0 y0 x1 y1 each */
+};
+
+/* A label of value v at one of a curve's candidate points (its middle,
+ * then its quarters, eighths, ...) whose box is free and inside the
+ * frame; returns whether one was drawn. */
+static int label_curve(struct draw *d, const struct plot_frame *f, struct placed *pl,
+		       const struct curve *cv, double v)
 {
+	static const double at[] = {0.5, 0.25, 0.75, 0.125, 0.875, 0.375, 0.625};
 	char buf[32];
 	snprintf(buf, sizeof buf, "%.4g", v);
 	double w = strlen(buf) * LABEL_FONT * 0.55 + 2, h = LABEL_FONT * 0.9;
-	double box[8] = {x - w / 2, y - h / 2, x + w / 2, y - h / 2, x + w / 2, y + h / 2,
-			 x - w / 2, y + h / 2};
-	draw_polygon(d, 4, box, 1.0, 0);
-	draw_text(d, x, y, LABEL_FONT, 0, DRAW_CENTER, DRAW_MIDDLE, buf);
+	for (size_t t = 0; t < sizeof at / sizeof at[0]; t++) {
+		int m = (int)(at[t] * (cv->npts - 1));
+		double x, y;
+		if (!plot_frame_map(f, cv->xy[2 * m], cv->xy[2 * m + 1], &x, &y))
+			continue;
+		double b[4] = {x - w / 2, y - h / 2, x + w / 2, y + h / 2};
+		if (b[0] < f->x0 || b[2] > f->x1 || b[1] < f->y0 || b[3] > f->y1)
+			continue;
+		int free_place = 1;
+		for (int i = 0; i < pl->n && free_place; i++) {
+			const double *o = pl->box + 4 * i;
+			free_place = !(b[0] < o[2] && o[0] < b[2] && b[1] < o[3] && o[1] < b[3]);
+		}
+		if (!free_place)
+			continue;
+		if (pl->n == pl->cap) {
+			pl->cap = pl->cap ? 2 * pl->cap : 64;
+			pl->box = xreallocarray(pl->box, (size_t)pl->cap, 4 * sizeof *pl->box);
+		}
+		memcpy(pl->box + 4 * pl->n++, b, sizeof b);
+		double box[8] = {b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[3]};
+		draw_polygon(d, 4, box, 1.0, 0);
+		draw_text(d, x, y, LABEL_FONT, 0, DRAW_CENTER, DRAW_MIDDLE, buf);
+		return 1;
+	}
+	return 0;
+}
+
+/* -map: more curves than this on a page (an array of features, each with
+ * its rings) are drawn as a grey-scale map instead of labelled contours. */
+#define MAP_CURVES 100
+/* -map: the map's pixels at most this many a side (a finer grid is
+ * sampled at the nearest point), and the scale bar's size (points). */
+#define MAP_PIXELS 1000
+#define BAR_W 200.0
+#define BAR_H 10.0
+#define BAR_FONT 10.0   /* the size of the axes' tick labels */
+
+/* The grey of value v on the page's scale: black at zmin, white at zmax. */
+static unsigned char map_gray(const struct ctx *c, double v)
+{
+	double t = c->zmax > c->zmin ? (v - c->zmin) / (c->zmax - c->zmin) : 1;
+	return (unsigned char)lround(255 * (t < 0 ? 0 : t > 1 ? 1 : t));
+}
+
+/* The image as a grey map over the frame (each grid point a pixel, cells
+ * centred on the points) and, under the x label, its scale bar with round
+ * ticks. */
+static void draw_map(struct draw *d, const struct ctx *c, const struct plot_frame *f,
+		     const struct contour *g)
+{
+	int cols = g->nx < MAP_PIXELS ? g->nx : MAP_PIXELS;
+	int rows = g->ny < MAP_PIXELS ? g->ny : MAP_PIXELS;
+	unsigned char *px = xmalloc((size_t)cols * (size_t)rows);
+	for (int j = 0; j < rows; j++)
+		for (int i = 0; i < cols; i++) {
+			int gi = cols > 1 ? (int)lround((double)i * (g->nx - 1) / (cols - 1)) : 0;
+			int gj = rows > 1 ? (int)lround((double)(rows - 1 - j) * (g->ny - 1) / (rows - 1)) : 0;
+			px[(size_t)j * cols + i] = map_gray(c, g->z[(size_t)gj * g->nx + gi]);
+		}
+	double hx = g->nx > 1 ? (g->xmax - g->xmin) / (cols - 1) / 2 : 0;
+	double hy = g->ny > 1 ? (g->ymax - g->ymin) / (rows - 1) / 2 : 0;
+	double x0, y0, x1, y1;
+	plot_frame_map(f, g->xmin - hx, g->ymin - hy, &x0, &y0);
+	plot_frame_map(f, g->xmax + hx, g->ymax + hy, &x1, &y1);
+	draw_image(d, x0, y0, x1, y1, cols, rows, px);
+	free(px);
+}
+
+static void draw_scale_bar(struct draw *d, const struct ctx *c, const struct plot_frame *f)
+{
+	enum { STEPS = 64 };
+	unsigned char ramp[STEPS];
+	for (int i = 0; i < STEPS; i++)
+		ramp[i] = map_gray(c, c->zmin + (c->zmax - c->zmin) * i / (STEPS - 1));
+	double cx = (f->x0 + f->x1) / 2, y0 = f->y0 - 62;
+	draw_image(d, cx - BAR_W / 2, y0, cx + BAR_W / 2, y0 + BAR_H, STEPS, 1, ramp);
+	double box[8] = {cx - BAR_W / 2, y0, cx + BAR_W / 2, y0, cx + BAR_W / 2, y0 + BAR_H,
+			 cx - BAR_W / 2, y0 + BAR_H};
+	draw_set_line(d, 1, 0.5);
+	draw_polygon(d, 4, box, DRAW_NOFILL, 1);
+	struct plot_axis ax;
+	plot_axis_linear(&ax, c->zmin, c->zmax, 4, 0);
+	for (int k = 0; k < ax.nticks; k++) {
+		double x = cx - BAR_W / 2 + BAR_W * (ax.tick[k] - ax.lo) / (ax.hi - ax.lo);
+		draw_segment(d, x, y0, x, y0 - 3);
+		draw_text(d, x, y0 - 4, BAR_FONT, 0, DRAW_CENTER, DRAW_TOP, ax.label[k]);
+	}
 }
 
 static struct draw *render(void *vc)
@@ -360,10 +473,12 @@ static struct draw *render(void *vc)
 		plot_axis_linear(&ya, pg->bounds[2], pg->bounds[3], c->s.yticks, 0);
 		struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
 		plot_frame_place(&f, d, c->s.equalscale);
-		plot_frame_draw(d, &f, c->s.grid, pg->label ? pg->label : c->s.toplabel,
-				c->s.xlabel, c->s.ylabel);
+		int map = pg->grid && (c->map > 0 || (c->map == 0 && pg->ncurves > MAP_CURVES));
 		draw_clip(d, f.x0, f.y0, f.x1, f.y1);
-		for (int i = 0; i < pg->ncurves; i++) {
+		if (map)
+			draw_map(d, c, &f, pg->grid);
+		/* the many curves of a map's page would hide it: the map alone */
+		for (int i = 0; i < pg->ncurves && !(map && pg->ncurves > MAP_CURVES); i++) {
 			const struct curve *cv = &pg->c[i];
 			double *xy = xreallocarray(NULL, (size_t)cv->npts, 2 * sizeof *xy);
 			for (int k = 0; k < cv->npts; k++)
@@ -372,21 +487,53 @@ static struct draw *render(void *vc)
 			draw_polyline(d, cv->npts, xy);
 			free(xy);
 		}
-		if (c->contlabel) {
+		if (c->contlabel && !map) {
+			struct placed pl = {0, 0, NULL};
 			draw_set_line(d, 1, 0.8);
 			for (int i = 0; i < pg->ncurves; i++) {
 				const struct curve *cv = &pg->c[i];
-				if (cv->npts < 4)
-					continue;   /* too short to carry a label */
-				int m = cv->npts / 2;
-				double px, py;
-				plot_frame_map(&f, cv->xy[2 * m], cv->xy[2 * m + 1], &px, &py);
-				label_at(d, px, py, c->levels[cv->level]);
+				if (cv->npts >= 4)      /* else too short to carry a label */
+					label_curve(d, &f, &pl, cv, c->levels[cv->level]);
 			}
+			free(pl.box);
 		}
 		draw_unclip(d);
+		plot_frame_draw(d, &f, c->s.grid, pg->label ? pg->label : c->s.toplabel,
+				c->s.xlabel, c->s.ylabel);
+		if (map)
+			draw_scale_bar(d, c, &f);
 	}
 	return d;
+}
+
+/* -cutrow: rows whose variances differ by less than this fraction are
+ * equals (the rows of a periodic array differ by rounding) */
+#define CUTROW_SAME 1e-6
+
+/* -cutrow: the y of the row of g with the largest variance of its values,
+ * the rows visited from the middle outwards so that of equals the middle
+ * one wins. */
+static double cut_row(const struct contour *g)
+{
+	int best = g->ny / 2;
+	double bestvar = -1;
+	for (int k = 0; k < g->ny; k++) {
+		/* middle, one above, one below, two above, ... */
+		int j = g->ny / 2 + (k % 2 ? (k + 1) / 2 : -(k / 2));
+		if (j < 0 || j >= g->ny)
+			continue;
+		const double *z = g->z + (size_t)j * g->nx;
+		double mean = 0, var = 0;
+		for (int i = 0; i < g->nx; i++)
+			mean += z[i] / g->nx;
+		for (int i = 0; i < g->nx; i++)
+			var += (z[i] - mean) * (z[i] - mean) / g->nx;
+		if (var > bestvar * (1 + CUTROW_SAME) + 1e-300) {
+			bestvar = var;
+			best = j;
+		}
+	}
+	return fmt_contour_y(g, best);
 }
 
 /* ---- inputs ---- */
@@ -539,6 +686,7 @@ static void make_pages(struct ctx *c, const struct contour *g, const struct imag
 			sprintf(pg->label, "%s%sdepth %s um", tl, *tl ? ", " : "",
 				num_fmt(dbuf, stk->depth[pi]));
 		}
+		pg->grid = gp;
 		if (gp) {
 			pg->bounds[0] = gp->xmin, pg->bounds[1] = gp->xmax;
 			pg->bounds[2] = gp->ymin, pg->bounds[3] = gp->ymax;
@@ -620,6 +768,19 @@ int main(int argc, char **argv)
 	else
 		g = read_grid(&o, &stk, &zmin, &zmax);
 
+	if (o.cutrow) {
+		if (!g)
+			die_status(EXIT_USAGE, "-cutrow reads a contour-file, not a -3D file");
+		char f[NUM_BUFSZ];
+		printf("%s\n", num_fmt(f, cut_row(g)));
+		fshut(stdout, "stdout");
+		if (stk)
+			fmt_stack_free(stk);
+		else
+			fmt_contour_free(g);
+		fmt_options_free(spec, val);
+		return 0;
+	}
 	/* the labels the input carries are the defaults (contour.5) */
 	const struct plot_labels *lab = pf ? &pf->labels : &g->labels;
 	plot_settings_labels(&c.s, lab, spec, val, &o.cmd);
@@ -635,6 +796,8 @@ int main(int argc, char **argv)
 			step = plot_nice_step(zmin, zmax, 10);
 		c.nlevels = make_levels(zmin, zmax, step, &c.levels);
 	}
+	c.map = o.map;
+	c.zmin = zmin, c.zmax = zmax;
 	make_pages(&c, g, stk, pf, join, zmin, zmax);
 	if (o.has_level)
 		write_image_cont(&c, lab);

@@ -158,7 +158,7 @@ static void feature_label(struct draw *d, const struct plot_frame *f,
 	char buf[96];
 	double ph = phase_norm(r->phase);
 	if (full)
-		snprintf(buf, sizeof buf, "%d: t=%g %g deg", i + 1, r->t, ph);
+		snprintf(buf, sizeof buf, "#%d: transmission %g, phase %g deg", i + 1, r->t, ph);
 	else
 		snprintf(buf, sizeof buf, "%g deg", ph);
 	double tw = strlen(buf) * LABEL_FONT * 0.55 + 2, th = LABEL_FONT * 1.1;
@@ -235,7 +235,7 @@ int main(int argc, char **argv)
 	memset(&c, 0, sizeof c);
 	struct opt_value val[sizeof spec / sizeof spec[0]];
 	plot_begin(&c.s, &(struct plot_settings){
-		.toplabel = "2D Mask", .xlabel = "X-AXIS", .ylabel = "Y-AXIS",
+		.toplabel = "mask", .xlabel = "x (um)", .ylabel = "y (um)",
 		.equalscale = 1, .postscript = 1, .line = 1, .scale = 1.0,
 		.xticks = 4, .yticks = 4,
 	}, spec, val, &o.cmd);

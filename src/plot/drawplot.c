@@ -28,7 +28,7 @@ static const char usage_head[] =
 	"usage: drawplot [-o options-file] [-Pprinter] [-s scale] [-ar] [-clip] [-e] [-g]\n"
 	"                [-l] [-noplot] [-print] [-ps] [-xlog] [-ylog] [-t template-file]\n"
 	"                [-tl toplabel] [-xl xlabel] [-yl ylabel] [-svg file] [-big]\n"
-	"                [-section [-times t1,t2,...]] [X options] plot-file...\n"
+	"                [-section] [-times t1,t2,...] [-fill] [X options] plot-file...\n"
 	"  -ar              no automatic axis ranging\n"
 	"  -clip            clip the curves to the plot box\n"
 	"  -e               equal x and y scales\n"
@@ -38,7 +38,9 @@ static const char usage_head[] =
 	"  -t template-file line type, marker and label per curve\n"
 	"  -section         a resist cross-section: all sets on one page, the resist\n"
 	"                   under the last profile filled, the substrate marked\n"
-	"  -times t1,...    with -section: the sets' print times (s), for the legend\n"
+	"  -fill            closed curves (last point the first) filled light grey\n"
+	"  -times t1,...    the sets' print times (s): with -section for the legend,\n"
+	"                   else each page's title ends with its time\n"
 	"  -big             draw plot files whose estimated memory or time (from\n"
 	"                   their size) is beyond the limits (also SAMPLE3D_BIG=1)\n";
 
@@ -54,7 +56,7 @@ static const struct opt_spec spec[] = {
 
 struct options {
 	struct plot_cmd cmd;
-	int noauto, clip, equal, grid, xlog, ylog, section;
+	int noauto, clip, equal, grid, xlog, ylog, section, fill;
 	const char *templ, *times;
 	int nfiles;
 	char **files;
@@ -62,8 +64,10 @@ struct options {
 
 struct ctx {
 	struct plot_settings s;
-	int autorange, clip, xlog, ylog, section;
+	int autorange, clip, xlog, ylog, section, fill;
 	struct template *t;
+	double *times;          /* -times without -section: page i's print time */
+	int ntimes;
 	int nfiles;
 	struct plot_file **pf;
 };
@@ -90,6 +94,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-ylog")) o->ylog = 1;
 		else if (args_str(&a, "-t", &o->templ)) ;
 		else if (args_flag(&a, "-section")) o->section = 1;
+		else if (args_flag(&a, "-fill")) o->fill = 1;
 		else if (args_str(&a, "-times", &o->times)) ;
 		else if (plot_cmd_arg(&a, &o->cmd, PC_LANDSCAPE | PC_XDISPLAY | PC_BIG)) ;
 		else if (s[0] == '-' && s[1] != '\0') args_unknown(&a);
@@ -97,8 +102,6 @@ static void parse_options(int argc, char **argv, struct options *o)
 	}
 	if (o->nfiles == 0)
 		args_error(&a, "no plot-file");
-	if (o->times && !o->section)
-		args_error(&a, "-times goes with -section");
 	if (o->section && (o->xlog || o->ylog))
 		args_error(&a, "-section draws linear axes: not with -xlog or -ylog");
 	args_done(&a, NULL);
@@ -223,6 +226,8 @@ static void legend(struct draw *d, const struct ctx *c, const struct plot_frame 
  * fraction of the box's height, and the greys (0 black, 1 white). */
 #define SECTION_SUBSTRATE 0.15
 #define SECTION_RESIST_GRAY 0.78
+/* -section: z drawn within this fraction of x's scale counts as unstretched */
+#define SECTION_SAME_SCALE 0.02
 #define SECTION_SUBSTRATE_GRAY 0.5
 
 /* One page per file: every set's profile, the resist under the last. */
@@ -271,7 +276,14 @@ static void section_page(struct draw *d, const struct ctx *c, const struct plot_
 		draw_polygon(d, n + 2, xy, SECTION_RESIST_GRAY, 0);
 		free(xy);
 	}
-	plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+	/* the z scale against x's, stated in the z title when it differs */
+	double zs = ((f.y1 - f.y0) / (ya.hi - ya.lo)) / ((f.x1 - f.x0) / (xa.hi - xa.lo));
+	char yl[300];
+	if (c->s.ylabel && *c->s.ylabel && fabs(zs - 1) > SECTION_SAME_SCALE)
+		snprintf(yl, sizeof yl, "%.200s, stretched %.2gx", c->s.ylabel, zs);
+	else
+		snprintf(yl, sizeof yl, "%.250s", c->s.ylabel ? c->s.ylabel : "");
+	plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, yl);
 	for (int si = 0; si < pf->nsets; si++) {
 		int lt, mk;
 		const char *lab;
@@ -280,6 +292,27 @@ static void section_page(struct draw *d, const struct ctx *c, const struct plot_
 			draw_curve(d, &f, &pf->sets[si].curves[i], lt, mk);
 	}
 	legend(d, c, &f, pf->nsets);
+}
+
+/* -fill: the closed curves of a set (a region's outline) filled light
+ * grey under every curve's line, so the region reads as an area even
+ * where its outline runs along the frame. */
+#define FILL_GRAY 0.85
+static void fill_closed(struct draw *d, const struct plot_frame *f, const struct plot_set *st)
+{
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		int n = cv->npts;
+		if (n < 4 || cv->p[0] != cv->p[2 * (n - 1)] || cv->p[1] != cv->p[2 * (n - 1) + 1])
+			continue;
+		double *xy = xreallocarray(NULL, (size_t)n, 2 * sizeof *xy);
+		int m = 0;
+		for (int k = 0; k < n - 1; k++)
+			if (plot_frame_map(f, cv->p[2 * k], cv->p[2 * k + 1], &xy[2 * m], &xy[2 * m + 1]))
+				m++;
+		draw_polygon(d, m, xy, FILL_GRAY, 0);
+		free(xy);
+	}
 }
 
 static struct draw *render(void *vc)
@@ -309,9 +342,21 @@ static struct draw *render(void *vc)
 			make_axis(&ya, st, 1, c->ylog, c->s.yticks, c->autorange);
 			struct plot_frame f = {0, 0, 0, 0, &xa, &ya};
 			plot_frame_place(&f, d, c->s.equalscale);
-			plot_frame_draw(d, &f, c->s.grid, c->s.toplabel, c->s.xlabel, c->s.ylabel);
+			/* -times: the page's print time after the title */
+			int page = d->npages ? d->npages - 1 : 0;
+			char title[320];
+			snprintf(title, sizeof title, "%.250s", c->s.toplabel ? c->s.toplabel : "");
+			if (page < c->ntimes) {
+				char tf[NUM_BUFSZ];
+				size_t n = strlen(title);
+				snprintf(title + n, sizeof title - n, "%st = %s s", n ? ", " : "",
+					 num_fmt(tf, c->times[page]));
+			}
+			plot_frame_draw(d, &f, c->s.grid, title, c->s.xlabel, c->s.ylabel);
 			if (c->clip)
 				draw_clip(d, f.x0, f.y0, f.x1, f.y1);
+			if (c->fill)
+				fill_closed(d, &f, st);
 			for (int i = 0; i < st->ncurves; i++) {
 				int lt, mk;
 				const char *lab;
@@ -352,9 +397,20 @@ int main(int argc, char **argv)
 	if (tf)
 		c.t = fmt_template_read(tf);
 	c.section = o.section;
+	c.fill = o.fill;
 	if (c.section)          /* the box as it is: the fill ends at its sides */
 		c.autorange = 0;
-	if (o.times && !c.t) {
+	if (o.times && !c.section) {
+		/* -times: each page's title ends with its print time */
+		char *list = xstrdup(o.times), *save = NULL;
+		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+			c.times = xreallocarray(c.times, (size_t)c.ntimes + 1, sizeof *c.times);
+			if (!num_parse(t, &c.times[c.ntimes]))
+				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
+			c.ntimes++;
+		}
+		free(list);
+	} else if (o.times && !c.t) {
 		/* -section -times: a legend of print times, a line type each */
 		c.t = xcalloc(1, sizeof *c.t);
 		char *list = xstrdup(o.times), *save = NULL;
@@ -394,6 +450,7 @@ int main(int argc, char **argv)
 		fmt_plot_free(c.pf[i]);
 	free(c.pf);
 	fmt_template_free(c.t);
+	free(c.times);
 	fmt_options_free(spec, val);
 	free(o.files);
 	return 0;

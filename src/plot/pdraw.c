@@ -20,6 +20,8 @@
 #include "num.h"
 #include "plot_bsp.h"
 #include "plot_common.h"
+#include "plot_window.h"
+#include "plot_zbuf.h"
 #include "util.h"
 #include "vec3.h"
 
@@ -31,6 +33,7 @@
 static const char usage_head[] =
 	"usage: pdraw [-v vx vy vz] [-o options-file] [-Pprinter] [-s scale] [-e]\n"
 	"             [-zs factor|auto] [-times t1,t2,...] [-h [-walls] [-shade]]\n"
+	"             [-raster|-vector] [-window x0 x1 y0 y1|auto]\n"
 	"             [-nosort] [-noplot] [-print] [-ps] [-big] [-tl toplabel] [-xl xlabel]\n"
 	"             [-yl ylabel] [-zl zlabel] [-svg file] [X options] plotfile...\n"
 	"  -v vx vy vz      eye position (view vector), default -1 -2 1.5\n"
@@ -43,6 +46,14 @@ static const char usage_head[] =
 	"                   the box floor, so a resist surface looks a solid block\n"
 	"  -shade           with -h: grey polygons lit from the upper left, no mesh lines\n"
 	"  -nosort          with -h: paint the polygons in file order\n"
+	"  -raster          with -h: a shaded picture of 120 dpi, depth-buffered, no\n"
+	"                   mesh lines (the default when the polygons are on average\n"
+	"                   smaller than 2 x 2 points on the page)\n"
+	"  -vector          with -h: polygons and lines however small they are\n"
+	"  -window x0 x1 y0 y1  draw only the part of the data inside x0..x1, y0..y1\n"
+	"                   (um), cut at its edges (with -walls, walls there)\n"
+	"  -window auto     the central 6 x 6 um of data wider than 12 um (a large\n"
+	"                   mask), the title saying so; smaller data whole\n"
 	"  -big             draw plot files whose estimated memory or time (from\n"
 	"                   their size) is beyond the limits (also SAMPLE3D_BIG=1)\n"
 	"  -zl zlabel       z label\n"
@@ -79,6 +90,9 @@ struct options {
 	double zs;          /* -zs factor, 0 for auto, 1 by default */
 	int walls;          /* -walls */
 	int shade;          /* -shade */
+	int raster;         /* -raster 1, -vector -1, else 0 (by the polygons' size) */
+	double win[4];      /* -window x0 x1 y0 y1 */
+	int haswin;         /* 1 for a window, 2 for -window auto */
 	const char *times;  /* -times list */
 	int nfiles;
 	char **files;
@@ -91,6 +105,10 @@ struct ctx {
 	double zs;          /* z stretch, 0 for auto (per set) */
 	int walls;          /* -walls */
 	int shade;          /* -shade */
+	int raster;         /* as in struct options */
+	double win[4];
+	int haswin;
+	char winnote[96];   /* -window auto: what the title adds, or "" */
 	double *times;      /* -times: page i's print time */
 	int ntimes;
 	int nsets;
@@ -135,6 +153,25 @@ static void parse_options(int argc, char **argv, struct options *o)
 		else if (args_flag(&a, "-e")) o->unequal = 1;
 		else if (args_flag(&a, "-walls")) o->walls = 1;
 		else if (args_flag(&a, "-shade")) o->shade = 1;
+		else if (args_flag(&a, "-raster")) o->raster = 1;
+		else if (args_flag(&a, "-vector")) o->raster = -1;
+		else if (a.i + 1 < argc && strcmp(s, "-window") == 0 &&
+			 strcmp(argv[a.i + 1], "auto") == 0) {
+			o->haswin = 2;
+			a.i += 2;
+		}
+		else if (args_flag(&a, "-window")) {
+			for (int k = 0; k < 4; k++) {
+				if (a.i >= argc || !num_parse(argv[a.i], &o->win[k])) {
+					args_error(&a, "option -window needs four numbers x0 x1 y0 y1");
+					break;
+				}
+				a.i++;
+			}
+			o->haswin = 1;
+			if (!(o->win[1] > o->win[0]) || !(o->win[3] > o->win[2]))
+				args_error(&a, "option -window: x0 x1 y0 y1 with x0 < x1 and y0 < y1");
+		}
 		else if (a.i + 1 < argc && strcmp(s, "-zs") == 0 &&
 			 strcmp(argv[a.i + 1], "auto") == 0) {
 			o->zs = 0;
@@ -325,7 +362,8 @@ static int place_text(struct draw *d, struct texts *tx, double x, double y, doub
 }
 
 /* One axis along the box edge from p0 (at the axis' low end) in direction
- * k, ticks pointing along out (unit box units). */
+ * k, ticks pointing along out (unit box units): pass 0 its title, 1 its
+ * line and ticks, 2 its tick labels. */
 static void axis3(struct draw *d, const struct view *vw, const double *box, int k,
 		  const double *p0, const double *out, int ndiv, const char *label,
 		  double angle, struct texts *tx, int pass)
@@ -350,7 +388,8 @@ static void axis3(struct draw *d, const struct view *vw, const double *box, int 
 	to_page(vw, a, &x0, &y0);
 	to_page(vw, b, &x1, &y1);
 	draw_set_line(d, 1, 0.8);
-	draw_segment(d, x0, y0, x1, y1);
+	if (pass == 1)
+		draw_segment(d, x0, y0, x1, y1);
 	double t[3], tl[3];
 	for (int i = 0; i < ax.nticks; i++) {
 		double p[3];
@@ -364,8 +403,10 @@ static void axis3(struct draw *d, const struct view *vw, const double *box, int 
 		to_page(vw, p, &px, &py);
 		to_page(vw, t, &qx, &qy);
 		to_page(vw, tl, &lx, &ly);
-		draw_segment(d, px, py, qx, qy);
-		place_text(d, tx, lx, ly, FONT_TICK, 0, ax.label[i], 0);
+		if (pass == 1)
+			draw_segment(d, px, py, qx, qy);
+		else
+			place_text(d, tx, lx, ly, FONT_TICK, 0, ax.label[i], 0);
 	}
 }
 
@@ -398,11 +439,17 @@ static void axes(struct draw *d, const struct view *vw, const double *box, const
 		snprintf(zlabel, sizeof zlabel, "%.250s", c->s.zlabel ? c->s.zlabel : "");
 	}
 	struct texts tx = {0};
+	/* the titles, the lines, then the tick labels with z's before x's
+	 * and y's: where the axes meet at a corner the z axis keeps its
+	 * bottom label (x and y have the other end) */
 	for (int pass = 0; pass < 2; pass++) {
 		axis3(d, vw, box, 0, px, ox, c->s.xticks, c->s.xlabel, 0, &tx, pass);
 		axis3(d, vw, box, 1, py, oy, c->s.yticks, c->s.ylabel, 0, &tx, pass);
 		axis3(d, vw, box, 2, pz, oz, c->s.zticks, zlabel, 90, &tx, pass);
 	}
+	axis3(d, vw, box, 2, pz, oz, c->s.zticks, zlabel, 90, &tx, 2);
+	axis3(d, vw, box, 0, px, ox, c->s.xticks, c->s.xlabel, 0, &tx, 2);
+	axis3(d, vw, box, 1, py, oy, c->s.yticks, c->s.ylabel, 0, &tx, 2);
 }
 
 /* ---- drawing ---- */
@@ -501,9 +548,15 @@ static void paint_frag(void *pctx, const struct plot_frag *f)
  * Only the floor edge is stroked, and the vertical edges at the box's
  * corners, so the wall does not show the mesh. */
 #define WALL_GRAY 0.82
+/* A border node counts as on a side within this fraction of the box's
+ * width (0.5 nm on a 5 um cell, far below a pixel): a node a hair inside
+ * the side, as etch's clipping once left them, failed a tighter test, its
+ * two edges got no wall and the page showed through as a white slit down
+ * the block's face. */
+#define WALL_SNAP 1e-4
 static int on_side(const double *p, const double *box, int k)
 {
-	double eps = 1e-9 * (box[2 * k + 1] - box[2 * k]);
+	double eps = WALL_SNAP * (box[2 * k + 1] - box[2 * k]);
 	if (fabs(p[k] - box[2 * k]) <= eps)
 		return 1;
 	if (fabs(p[k] - box[2 * k + 1]) <= eps)
@@ -541,16 +594,144 @@ static void add_walls(struct plot_frag_list *all, const struct view *vw, const d
  * upper left behind the eye), in view coordinates, so the shading follows
  * the picture as drawn (z stretched or not). */
 #define SHADE_AMBIENT 0.3
-static double shade(const struct plot_frag *f)
+static double shade_normal(const double *un)
 {
 	static const double light[3] = {-0.42, 0.56, 0.71};   /* unit length */
-	if (!f->hasplane)
-		return 1.0;
-	double n[3] = {f->pl[0], f->pl[1], f->pl[2]};
+	double n[3] = {un[0], un[1], un[2]};
 	if (n[2] < 0)                   /* the side turned to the eye */
 		n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
 	double l = vec3_dot(n, light);
 	return SHADE_AMBIENT + (1 - SHADE_AMBIENT) * (l > 0 ? l : 0);
+}
+
+static double shade(const struct plot_frag *f)
+{
+	return f->hasplane ? shade_normal(f->pl) : 1.0;
+}
+
+/* ---- -raster: a depth-buffered picture ---- */
+
+/* Pixels per point of the picture: 120 dpi, finer than the 80 dpi of a
+ * slide and the 60-100 of a screen, so no pixel of it shows. */
+#define RASTER_PPP (120.0 / 72)
+/* Polygons smaller than this on the page on average (points^2, 2 x 2)
+ * would be drawn as outlines closer than a pixel at 80 dpi (a black
+ * noise): such a set is drawn as a picture. */
+#define RASTER_AREA 4.0
+/* The walls facing x and those facing y in two greys, so the block's
+ * corner shows without an outline. */
+#define WALL_GRAY_Y 0.7
+
+/* A polygon of view points (n, not repeated) into the buffer as a fan,
+ * grey g; its page points in xy. */
+static void zbuf_polygon(struct plot_zbuf *zb, const struct view *vw, const double *o, int n,
+			 double g)
+{
+	for (int i = 1; i + 1 < n; i++) {
+		const int t[3] = {0, i, i + 1};
+		double x[3], y[3], dd[3];
+		for (int k = 0; k < 3; k++) {
+			x[k] = vw->a * o[3 * t[k]] + vw->bx;
+			y[k] = vw->a * o[3 * t[k] + 1] + vw->by;
+			dd[k] = o[3 * t[k] + 2];
+		}
+		plot_zbuf_tri(zb, x, y, dd, g);
+	}
+}
+
+/* Newell's normal of view points (unit, or 0 for a degenerate polygon). */
+static int newell(const double *o, int n, double *nv)
+{
+	nv[0] = nv[1] = nv[2] = 0;
+	for (int i = 0; i < n; i++) {
+		const double *a = o + 3 * i, *b = o + 3 * ((i + 1) % n);
+		nv[0] += (a[1] - b[1]) * (a[2] + b[2]);
+		nv[1] += (a[2] - b[2]) * (a[0] + b[0]);
+		nv[2] += (a[0] - b[0]) * (a[1] + b[1]);
+	}
+	return normalize3(nv);
+}
+
+/* The mean page area of a set's polygons (points^2), 0 without any. */
+static double mean_area(const struct view *vw, const struct plot_set *st)
+{
+	double sum = 0;
+	long n = 0;
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		if (!is_polygon(cv))
+			continue;
+		double o0[3], oa[3], ob[3], a = 0;
+		to_view(vw, cv->p, o0);
+		to_view(vw, cv->p + 3, oa);
+		for (int k = 2; k + 1 < cv->npts; k++) {
+			to_view(vw, cv->p + 3 * k, ob);
+			a += ((oa[0] - o0[0]) * (ob[1] - o0[1]) - (ob[0] - o0[0]) * (oa[1] - o0[1])) / 2;
+			memcpy(oa, ob, sizeof oa);
+		}
+		sum += fabs(a) * vw->a * vw->a;
+		n++;
+	}
+	return n ? sum / (double)n : 0;
+}
+
+/* -h as a picture: every polygon shaded (Lambert, shade_normal) and the
+ * -walls in two greys, kept where nearest the eye; open curves drawn on
+ * top as lines. */
+static void draw_raster(struct draw *d, const struct view *vw, const struct ctx *c,
+			const struct plot_set *st, const double *box)
+{
+	double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+	for (int i = 0; i < 8; i++) {
+		double p[3] = {box[i & 1], box[2 + ((i >> 1) & 1)], box[4 + ((i >> 2) & 1)]}, x, y;
+		to_page(vw, p, &x, &y);
+		lo[0] = fmin(lo[0], x), lo[1] = fmin(lo[1], y);
+		hi[0] = fmax(hi[0], x), hi[1] = fmax(hi[1], y);
+	}
+	struct plot_zbuf zb;
+	plot_zbuf_init(&zb, floor(lo[0]), floor(lo[1]), ceil(hi[0]), ceil(hi[1]), RASTER_PPP);
+	double *o = NULL;
+	size_t cap = 0;
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		if (!is_polygon(cv))
+			continue;
+		int n = cv->npts - 1;
+		xgrow(&o, &cap, (size_t)n * 3, sizeof *o);
+		for (int k = 0; k < n; k++)
+			to_view(vw, cv->p + 3 * k, o + 3 * k);
+		double nv[3];
+		if (newell(o, n, nv))
+			zbuf_polygon(&zb, vw, o, n, shade_normal(nv));
+		if (!c->walls)
+			continue;
+		for (int e = 0; e < n; e++) {
+			const double *a = cv->p + 3 * e, *b = cv->p + 3 * e + 3;
+			for (int k = 0; k < 2; k++) {
+				int sa = on_side(a, box, k);
+				if (!sa || sa != on_side(b, box, k) || (a[2] <= box[4] && b[2] <= box[4]))
+					continue;
+				double q[4][3] = {{a[0], a[1], a[2]}, {b[0], b[1], b[2]},
+						  {b[0], b[1], box[4]}, {a[0], a[1], box[4]}}, w[12];
+				for (int j = 0; j < 4; j++)
+					to_view(vw, q[j], w + 3 * j);
+				zbuf_polygon(&zb, vw, w, 4, k == 0 ? WALL_GRAY : WALL_GRAY_Y);
+			}
+		}
+	}
+	free(o);
+	plot_zbuf_draw(&zb, d);
+	for (int i = 0; i < st->ncurves; i++) {
+		const struct plot_curve *cv = &st->curves[i];
+		if (is_polygon(cv))
+			continue;
+		double *xy = xreallocarray(NULL, (size_t)cv->npts + 1, 2 * sizeof *xy);
+		for (int k = 0; k < cv->npts; k++)
+			to_page(vw, cv->p + 3 * k, &xy[2 * k], &xy[2 * k + 1]);
+		draw_set_line(d, curve_linetype(c, i), 0.6);
+		draw_polyline(d, cv->npts, xy);
+		free(xy);
+	}
 }
 
 static void draw_hidden(struct draw *d, const struct view *vw, const struct ctx *c,
@@ -594,7 +775,11 @@ static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set 
 	struct view vw;
 	make_view(&vw, c, box);
 	char title[320];
-	snprintf(title, sizeof title, "%.250s", c->s.toplabel ? c->s.toplabel : "");
+	snprintf(title, sizeof title, "%.200s", c->s.toplabel ? c->s.toplabel : "");
+	if (*c->winnote) {
+		size_t n = strlen(title);
+		snprintf(title + n, sizeof title - n, "%s%s", n ? ", " : "", c->winnote);
+	}
 	if (page < c->ntimes) {
 		char f[NUM_BUFSZ];
 		size_t n = strlen(title);
@@ -606,7 +791,10 @@ static void draw_set(struct draw *d, const struct ctx *c, const struct plot_set 
 			  title);
 	if (!c->hidden)
 		axes(d, &vw, box, c);
-	if (c->hidden && !c->nosort) {
+	double area = c->hidden && !c->nosort && c->raster >= 0 ? mean_area(&vw, st) : 0;
+	if (area > 0 && (c->raster > 0 || area < RASTER_AREA)) {
+		draw_raster(d, &vw, c, st, box);
+	} else if (c->hidden && !c->nosort) {
 		draw_hidden(d, &vw, c, st, box);
 	} else {
 		for (int i = 0; i < st->ncurves; i++) {
@@ -647,6 +835,30 @@ static struct draw *render(void *vc)
 		draw_set(d, c, c->sets[i], i);
 	}
 	return d;
+}
+
+/* -window auto: data wider than AUTO_WIDE (um) on either side, a large
+ * mask, is drawn in its central AUTO_SIDE x AUTO_SIDE um: a few features
+ * of an array (6 x 6 contacts of a 1 um pitch), large enough to see each
+ * feature's shape on a slide; the first set's box decides for every page. */
+#define AUTO_WIDE 12.0
+#define AUTO_SIDE 6.0
+static void auto_window(struct ctx *c)
+{
+	double box[6];
+	set_box(c->sets[0], box);
+	c->haswin = 0;
+	if (!(box[1] - box[0] > AUTO_WIDE) && !(box[3] - box[2] > AUTO_WIDE))
+		return;
+	for (int k = 0; k < 2; k++) {
+		double m = (box[2 * k] + box[2 * k + 1]) / 2, h = AUTO_SIDE / 2;
+		c->win[2 * k] = fmax(box[2 * k], m - h);
+		c->win[2 * k + 1] = fmin(box[2 * k + 1], m + h);
+	}
+	char a[NUM_BUFSZ], b[NUM_BUFSZ];
+	snprintf(c->winnote, sizeof c->winnote, "the central %s x %s um",
+		 num_fmt(a, c->win[1] - c->win[0]), num_fmt(b, c->win[3] - c->win[2]));
+	c->haswin = 1;
 }
 
 /* ---- keys (the guide's H J K L O A S D F Z Y X) ---- */
@@ -706,8 +918,11 @@ int main(int argc, char **argv)
 	c.zs = o.zs;
 	c.walls = o.walls;
 	c.shade = o.shade;
-	if ((c.walls || c.shade) && !c.hidden)
-		die_status(EXIT_USAGE, "-walls and -shade go with a hidden-line plot: add -h");
+	c.raster = o.raster;
+	c.haswin = o.haswin;
+	memcpy(c.win, o.win, sizeof c.win);
+	if ((c.walls || c.shade || c.raster) && !c.hidden)
+		die_status(EXIT_USAGE, "-walls, -shade, -raster and -vector go with a hidden-line plot: add -h");
 	if (o.times) {
 		/* a comma-separated list of times, one per page */
 		char *list = xstrdup(o.times), *save = NULL;
@@ -734,6 +949,14 @@ int main(int argc, char **argv)
 			c.sets[c.nsets++] = &pf[i]->sets[s];
 	}
 
+	struct plot_file *winpf = NULL;
+	if (c.haswin == 2 && c.nsets > 0)
+		auto_window(&c);
+	if (c.haswin) {         /* the sets cut to the window replace the sets read */
+		winpf = plot_window_sets(c.sets, c.nsets, c.win);
+		for (int s = 0; s < c.nsets; s++)
+			c.sets[s] = &winpf->sets[s];
+	}
 	/* the first file that carries labels gives the default ones */
 	for (int i = 0; i < o.nfiles; i++)
 		if (!fmt_labels_empty(&pf[i]->labels)) {
@@ -745,6 +968,8 @@ int main(int argc, char **argv)
 	for (int i = 0; i < o.nfiles; i++)
 		fmt_plot_free(pf[i]);
 	free(pf);
+	if (winpf)
+		fmt_plot_free(winpf);
 	free(c.sets);
 	free(c.times);
 	fmt_options_free(spec, val);

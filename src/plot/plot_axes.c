@@ -76,11 +76,25 @@ void plot_axis_linear(struct plot_axis *ax, double lo, double hi, int ndiv, int 
 		for (int k = 0; k < ax->nticks; k++)
 			ax->tick[k] = (a + k) * step;
 	} else {
+		/* the range as given, ticks at the round multiples inside it
+		 * (a 1, 2, 5 step near (hi - lo) / ndiv; a finer one while
+		 * fewer than two fall inside) */
 		ax->lo = lo;
 		ax->hi = hi;
-		ax->nticks = ndiv + 1;
-		for (int k = 0; k <= ndiv; k++)
-			ax->tick[k] = k == ndiv ? hi : lo + (hi - lo) * k / ndiv;
+		double step = plot_nice_step(lo, hi, ndiv), a, b;
+		for (;;) {
+			a = ceil(lo / step - SNAP_TOL), b = floor(hi / step + SNAP_TOL);
+			if (b - a >= 1 || !(step > 0))
+				break;
+			step = plot_nice_step(lo, hi, (int)lround((hi - lo) / step * 2) + 1);
+		}
+		while (b - a > PLOT_MAXTICKS - 1) {
+			step *= 2;
+			a = ceil(lo / step - SNAP_TOL), b = floor(hi / step + SNAP_TOL);
+		}
+		ax->nticks = b >= a ? (int)(b - a) + 1 : 0;
+		for (int k = 0; k < ax->nticks; k++)
+			ax->tick[k] = (a + k) * step;
 	}
 	plot_axis_labels(ax);
 }
@@ -148,7 +162,7 @@ static int try_labels(struct plot_axis *ax, int fixed, int prec, double step)
 void plot_axis_labels(struct plot_axis *ax)
 {
 	double span = fabs(ax->hi - ax->lo);
-	double step = ax->nticks > 1 ? span / (ax->nticks - 1) : span;
+	double step = ax->nticks > 1 ? fabs(ax->tick[1] - ax->tick[0]) : span;
 	double big = fmax(fabs(ax->lo), fabs(ax->hi));
 	int done = 0;
 	/* plain decimals for ordinary magnitudes (0.001 .. 99999), else %g */
@@ -207,6 +221,13 @@ void plot_frame_place(struct plot_frame *f, const struct draw *d, int equal)
 	f->y1 = cy + h / 2;
 }
 
+/* A tick on the frame's edge needs no grid line. */
+static int on_edge(const struct plot_axis *ax, double v)
+{
+	double tol = SNAP_TOL * fabs(ax->hi - ax->lo);
+	return fabs(v - ax->lo) <= tol || fabs(v - ax->hi) <= tol;
+}
+
 static double axis_pos(const struct plot_axis *ax, double v, double p0, double p1)
 {
 	return p0 + (v - ax->lo) / (ax->hi - ax->lo) * (p1 - p0);
@@ -242,7 +263,7 @@ void plot_frame_draw(struct draw *d, const struct plot_frame *f, int grid,
 		draw_set_line(d, 1, 0.8);
 		draw_segment(d, x, f->y0, x, f->y0 + TICK_LEN);
 		draw_segment(d, x, f->y1, x, f->y1 - TICK_LEN);
-		if (grid && k > 0 && k + 1 < xa->nticks) {
+		if (grid && !on_edge(xa, xa->tick[k])) {
 			draw_set_line(d, 3, 0.5);
 			draw_segment(d, x, f->y0, x, f->y1);
 		}
@@ -253,7 +274,7 @@ void plot_frame_draw(struct draw *d, const struct plot_frame *f, int grid,
 		draw_set_line(d, 1, 0.8);
 		draw_segment(d, f->x0, y, f->x0 + TICK_LEN, y);
 		draw_segment(d, f->x1, y, f->x1 - TICK_LEN, y);
-		if (grid && k > 0 && k + 1 < ya->nticks) {
+		if (grid && !on_edge(ya, ya->tick[k])) {
 			draw_set_line(d, 3, 0.5);
 			draw_segment(d, f->x0, y, f->x1, y);
 		}

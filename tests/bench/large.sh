@@ -4,7 +4,8 @@
 # sigma 0.5, a 0.05 um grid, nz 300, bake, 60 s development) through
 # sample3D with the ray-string engine on a 20 and a 40 um window, and
 # with -method fmm on 20 um.  Prints wall, CPU and peak memory per stage
-# (splat, bleach, etch, the pictures) from /usr/bin/time, and the total.
+# (splat, bleach, etch, the pictures) from /usr/bin/time, and the total,
+# and the pictures' sizes (profile.ps, cut.ps, image.ps).
 # Targets: 40 um under 10 min wall and 8 GB, 20 um under
 # 2 min, fmm 20 um under 5 min.  Asserts nothing.
 #
@@ -75,6 +76,12 @@ run() { # label size [sample3D options]
 			printf "large: %-22s %-7s %8.1f s wall %8.1f s CPU %8.0f MB\n", l, "plots", pe, pc, pm / 1024
 			printf "large: %-22s %-7s %8.1f s wall\n", l, "total", w }' "$tmp/times"
 	du -sm . | awk -v l="$label" '{ printf "large: %-22s files   %8d MB\n", l, $1 }'
+	# the pictures: their sizes, the largest file (the brief: at most
+	# 20 MB a file, and the plots at most a tenth of the run's wall time)
+	for f in profile.ps cut.ps image.ps; do
+		[ -e "$f" ] && wc -c <"$f" || echo 0
+	done | awk -v l="$label" '{ t += $1; if ($1 > m) m = $1 }
+		END { printf "large: %-22s picts   %8.2f MB, the largest %.2f MB\n", l, t / 1e6, m / 1e6 }'
 	cd "$tmp" || return
 	rm -rf "$d"
 }

@@ -38,5 +38,5 @@ close "$1" 255 3 "clear area gray"
 close "$2" 121 3 "t = 0.5 area gray"
 close "$3" 77 3 "opaque area gray"
 drawmask -noplot -lbl mask.in </dev/null 2>/dev/null || fail "drawmask -lbl"
-grep -q '^(1: t=1 0 deg) ' dataplot.ps || fail "-lbl: feature label missing"
+grep -q '^(#1: transmission 1, phase 0 deg) ' dataplot.ps || fail "-lbl: feature label missing"
 exit 0

@@ -6,7 +6,8 @@
 # points and the two floor corners, in page coordinates computed here
 # from the frame); the substrate band and the legend of print times are
 # there; ghostscript renders it; and the PostScript and SVG equal the
-# golden files (REGEN=1 rewrites them).
+# golden files (REGEN=1 rewrites them).  Without -section, -times puts
+# each set's time in its page's title.
 . "$TOP/tests/lib/common.sh"
 cat >cut.2D <<'C'
 -2 2 -1 0
@@ -35,8 +36,13 @@ grep -q '(t = 10 s)' cut.ps && grep -q '(t = 20 s)' cut.ps || fail "no legend of
 # the fill: a polygon of 7 points (5 profile + 2 floor) in the SVG
 awk -F'points="' '/<polygon/ { split($2, a, "\""); n = split(a[1], p, " "); if (n == 7) found = 1 }
 	END { exit !found }' cut.svg || fail "no 7-point resist fill polygon"
-drawplot -noplot -times 1 cut.2D >/dev/null 2>err.txt && fail "-times without -section accepted"
-[ "$(head -n 1 err.txt)" = "drawplot: -times goes with -section" ] || fail "-times alone: $(head -n 1 err.txt)"
+# -times without -section: a page a set, each title ending with its time
+drawplot -noplot -tl trench -times 10,20 -psfile pages.ps cut.2D || fail "-times alone"
+grep -q '^(trench, t = 10 s) ' pages.ps || fail "-times alone: page 1 not titled t = 10 s"
+grep -q '^(trench, t = 20 s) ' pages.ps || fail "-times alone: page 2 not titled t = 20 s"
+# -section states how much z is stretched against x (2 um of z against
+# 4 of x, in a square frame)
+grep -q 'stretched [0-9.]*x) ' cut.ps || fail "-section: the z title states no stretch"
 gs_check cut.ps
 g=$TOP/tests/drawplot/golden
 golden cut.ps "$g/section.ps"

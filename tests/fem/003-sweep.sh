@@ -2,7 +2,8 @@
 # (21x21 image, 60 z planes, 60 s: every point clears, cd 0.74 and 1.01
 # um at 80 and 100 mJ/cm2) run by make -j2.
 #  - uninterrupted: fem.dat has the 4 rows in (focus, dose) order, bossung.ps
-#    renders, the points' rate files and curves.plot are gone (no -keep),
+#    renders and its title names the CD height (-rel 10), the points' rate
+#    files and curves.plot are gone (no -keep),
 #    and a second run redoes nothing;
 #  - interrupted: an etch stand-in lets the first two points through and
 #    holds the others (-j 1, so that held stages do not take the slots the
@@ -39,6 +40,8 @@ awk 'NR > 1 { print $1, $2 }' full/fem.dat | tr '\n' ' ' | grep -qx -- '-0.5 80 
 [ -z "$(find full -name rate -o -name curves.plot)" ] || fail "intermediate files left without -keep"
 [ -s full/bossung.ps ] && [ -s full/bossung.svg ] || fail "bossung.ps/.svg missing"
 grep -qF 'focus \(um\)' full/bossung.ps || fail "bossung.ps: no focus axis label"
+grep -qF "(Bossung curves: CD at 10 % of the resist's height against focus)" full/bossung.ps ||
+	fail "bossung.ps: the title does not name the CD's height (-rel 10)"
 if command -v gs >/dev/null 2>&1; then gs_check full/bossung.ps; fi
 touch stamp
 sleep 1

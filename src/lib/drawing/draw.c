@@ -105,6 +105,20 @@ void draw_text(struct draw *d, double x, double y, double size, double angle,
 	it->valign = valign;
 }
 
+void draw_image(struct draw *d, double x0, double y0, double x1, double y1,
+		int cols, int rows, const unsigned char *pix)
+{
+	if (cols < 1 || rows < 1)
+		return;
+	double xy[4] = {fmin(x0, x1), fmin(y0, y1), fmax(x0, x1), fmax(y0, y1)};
+	struct draw_item *it = add(d, DRAW_IMAGE, 2, xy);
+	size_t n = (size_t)cols * (size_t)rows;
+	it->text = xmalloc(n);
+	memcpy(it->text, pix, n);
+	it->halign = cols;
+	it->valign = rows;
+}
+
 void draw_clip(struct draw *d, double x0, double y0, double x1, double y1)
 {
 	double xy[4] = {fmin(x0, x1), fmin(y0, y1), fmax(x0, x1), fmax(y0, y1)};

@@ -28,7 +28,7 @@ enum { DRAW_NLINETYPES = 11, DRAW_NMARKERS = 18 };
 enum { DRAW_LEFT = -1, DRAW_CENTER = 0, DRAW_RIGHT = 1 };      /* halign */
 enum { DRAW_BOTTOM = -1, DRAW_MIDDLE = 0, DRAW_TOP = 1 };      /* valign */
 
-enum draw_kind { DRAW_LINE, DRAW_POLY, DRAW_TEXT, DRAW_CLIP, DRAW_UNCLIP };
+enum draw_kind { DRAW_LINE, DRAW_POLY, DRAW_TEXT, DRAW_CLIP, DRAW_UNCLIP, DRAW_IMAGE };
 
 /* The ints side by side: 80 bytes, not 96 (a list holds two items a
  * triangle for pdraw -h). */
@@ -41,9 +41,9 @@ struct draw_item {
 	double gray;        /* stroke (or text) gray, 0 black .. 1 white */
 	double fill;        /* DRAW_POLY: fill gray or DRAW_NOFILL */
 	double *xy;         /* 2n coordinates; DRAW_CLIP: x0 y0 x1 y1 */
-	char *text;         /* DRAW_TEXT, at xy[0], xy[1] */
+	char *text;         /* DRAW_TEXT, at xy[0], xy[1]; DRAW_IMAGE: the pixels */
 	double size, angle; /* text size in points, angle in degrees */
-	int halign, valign;
+	int halign, valign; /* DRAW_IMAGE: columns and rows */
 };
 
 struct draw {
@@ -75,6 +75,11 @@ void draw_marker(struct draw *d, int type, double x, double y, double size);
 /* Text in Helvetica, size points, rotated angle degrees about (x, y). */
 void draw_text(struct draw *d, double x, double y, double size, double angle,
 	       int halign, int valign, const char *s);
+/* A grey-scale picture of cols x rows pixels (0 black .. 255 white, row
+ * by row from the top) stretched over the page rectangle x0 y0 x1 y1:
+ * what a drawing of more polygons than pixels is rendered to. */
+void draw_image(struct draw *d, double x0, double y0, double x1, double y1,
+		int cols, int rows, const unsigned char *pix);
 /* Clips later drawing on this page to a rectangle, until draw_unclip. */
 void draw_clip(struct draw *d, double x0, double y0, double x1, double y1);
 void draw_unclip(struct draw *d);

@@ -119,6 +119,32 @@ static void set_line(struct xwin *x, const struct draw_item *e)
 	XSetForeground(x->dpy, x->gc, gray_pixel(x, e->gray));
 }
 
+/* A DRAW_IMAGE as filled rectangles, one a run of equal grey along a row
+ * (white runs left out: the window is cleared to white). */
+static void x11_image(struct xwin *x, const struct draw_item *e)
+{
+	int cols = e->halign, rows = e->valign;
+	const unsigned char *px = (const unsigned char *)e->text;
+	double pw = (e->xy[2] - e->xy[0]) / cols, ph = (e->xy[3] - e->xy[1]) / rows;
+	for (int r = 0; r < rows; r++)
+		for (int i = 0; i < cols;) {
+			const unsigned char *row = px + (size_t)r * (size_t)cols;
+			int n = 1;
+			while (i + n < cols && row[i + n] == row[i])
+				n++;
+			if (row[i] != 255) {
+				short ax, ay, bx, by;
+				map_pt(x, e->xy[0] + i * pw, e->xy[3] - r * ph, &ax, &ay);
+				map_pt(x, e->xy[0] + (i + n) * pw, e->xy[3] - (r + 1) * ph, &bx, &by);
+				XSetForeground(x->dpy, x->gc, gray_pixel(x, row[i] / 255.0));
+				XFillRectangle(x->dpy, x->win, x->gc, ax, ay,
+					       (unsigned)(bx > ax ? bx - ax : 1),
+					       (unsigned)(by > ay ? by - ay : 1));
+			}
+			i += n;
+		}
+}
+
 static void paint(struct xwin *x, const struct draw *d, int page)
 {
 	x->pw = d->w;
@@ -174,6 +200,9 @@ static void paint(struct xwin *x, const struct draw *d, int page)
 			XSetClipRectangles(x->dpy, x->gc, 0, 0, &r, 1, Unsorted);
 			break;
 		}
+		case DRAW_IMAGE:
+			x11_image(x, e);
+			break;
 		case DRAW_UNCLIP:
 			XSetClipMask(x->dpy, x->gc, None);
 			break;
