@@ -99,9 +99,12 @@ t0=$(date +%s)
 (cd "$dir" && exec timeout "$timeout_s" "$@") >"$dir.log" 2>&1 </dev/null
 st=$?
 # the CPU seconds of the children (user + system): the second line of
-# times, "XmY.YYs XmY.YYs"; this shell ran only the one test
-cpu=$(times | awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/)
-	printf "%.1f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }')
+# times, "XmY.YYs XmY.YYs"; this shell ran only the one test.  (Into a
+# file: in a pipe or $(...) times would run in a new process, which has
+# no children yet.)
+times >"$dir.times"
+cpu=$(awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/)
+	printf "%.1f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$dir.times")
 echo "$st $(( $(date +%s) - t0 )) ${cpu:-0}" >"$dir.st.tmp" && mv "$dir.st.tmp" "$dir.st"
 rm -rf "$dir"
 ONE

@@ -1,10 +1,11 @@
-# tests/lib/slurm.sh - a private single-node Slurm cluster for a test, set
-# up as tests/fem/010-slurm.sh sets up its own: munged with a key
+# tests/lib/slurm.sh - a private single-node Slurm cluster for a test
+# (tests/fem/010-slurm.sh, tests/calib/004-slurm.sh): munged with a key
 # generated in the test's directory, slurmctld and slurmd with a
 # slurm.conf written there, addresses 127.0.0.1, ports picked free, run as
 # root, stopped by a trap on exit.  Source it after common.sh and call
 # slurm_start: it skips the test without Slurm or root, fails when the
-# cluster does not come up in 30 s, and exports SLURM_CONF.
+# cluster does not come up in 30 s, and exports SLURM_CONF.  slurm_check
+# alone skips the test early, before it does work of its own.
 slurm_port() { # slurm_port N: a free TCP port, from the test's pid
 	_p=$(( 20000 + ($$ * 7 + $1 * 131) % 20000 ))
 	while ss -ltn 2>/dev/null | grep -q ":$_p "; do _p=$((_p + 1)); done
@@ -16,13 +17,16 @@ slurm_stop() {
 	for _p in $slurm_pids; do kill -9 "$_p" 2>/dev/null; done
 	return 0
 }
-slurm_start() {
+slurm_check() {
 	for _t in sbatch squeue scontrol sinfo slurmctld slurmd munged; do
 		command -v $_t >/dev/null 2>&1 || [ -x /usr/sbin/$_t ] ||
 			skip "Slurm is not installed (no $_t; apt-get install slurm-wlm munge)"
 	done
 	[ "$(id -u)" -eq 0 ] || skip "a private Slurm cluster needs root (slurmd runs jobs as their user)"
 	PATH=$PATH:/usr/sbin
+}
+slurm_start() {
+	slurm_check
 	_D=$PWD
 	_ctl=$(slurm_port 1)
 	_dp=$(slurm_port 2)
