@@ -10,8 +10,11 @@
 # else a failure; a failing test's output is shown.
 #
 # Tests run TEST_JOBS at a time (default: the number of cores), the
-# slowest of the previous run first (their times are kept in
-# BUILD/test-times).  An area (tests/<area>/) is reported as soon as all
+# slowest of the previous run first (their wall times are kept in
+# BUILD/test-times).  Each test's CPU time (user + system of everything it
+# ran) goes to BUILD/test-cpu and each area's line shows its wall and CPU
+# seconds, so that the cost of a test can be measured on a busy machine,
+# where the wall time says more about the others' load.  An area (tests/<area>/) is reported as soon as all
 # its tests are done: its tests' results in name order, then a line with
 # its counts; the areas come in the order they finish, the closing line
 # "N passed, N failed" last.
@@ -95,7 +98,14 @@ esac
 t0=$(date +%s)
 (cd "$dir" && exec timeout "$timeout_s" "$@") >"$dir.log" 2>&1 </dev/null
 st=$?
-echo "$st $(( $(date +%s) - t0 ))" >"$dir.st.tmp" && mv "$dir.st.tmp" "$dir.st"
+# the CPU seconds of the children (user + system): the second line of
+# times, "XmY.YYs XmY.YYs"; this shell ran only the one test.  (Into a
+# file: in a pipe or $(...) times would run in a new process, which has
+# no children yet.)
+times >"$dir.times"
+cpu=$(awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/)
+	printf "%.1f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$dir.times")
+echo "$st $(( $(date +%s) - t0 )) ${cpu:-0}" >"$dir.st.tmp" && mv "$dir.st.tmp" "$dir.st"
 rm -rf "$dir"
 ONE
 ( for name in $order; do echo "$name"; done |
@@ -105,6 +115,7 @@ pool=$!
 
 pass=0 fail=0 skip=0 failed=""
 newtimes=$work/times
+newcpu=$work/cpu
 # the areas, in name order, each with its tests
 areas=$(for name in $sel; do echo "${name%%/*}"; done | uniq)
 area_tests() { for name in $sel; do case $name in "$1"/*) echo "$name" ;; esac; done; }
@@ -117,17 +128,19 @@ area_done() {
 }
 # prints an area's results, its tests in name order, then its line
 report_area() {
-	apass=0 afail=0 askip=0 atime=0
+	apass=0 afail=0 askip=0 atime=0 acpu=0
 	for name in $(area_tests "$1"); do
 		id=$(echo "$name" | tr '/.' '__')
 		if [ -f "$work/$id.st" ]; then
-			read st secs <"$work/$id.st"
+			read st secs cpu <"$work/$id.st"
 		else
-			st=125 secs=0
+			st=125 secs=0 cpu=0
 			echo "run.sh: the test was never run" >>"$work/$id.log"
 		fi
 		echo "$secs $name" >>"$newtimes"
+		echo "$cpu $name" >>"$newcpu"
 		atime=$((atime + secs))
+		acpu=$(awk -v a="$acpu" -v b="$cpu" 'BEGIN { printf "%.1f", a + b }')
 		if [ "$st" -eq 0 ]; then
 			pass=$((pass + 1)) apass=$((apass + 1))
 			echo "PASS $name"
@@ -143,7 +156,7 @@ report_area() {
 	done
 	line="== $1: $apass passed, $afail failed"
 	[ $askip -gt 0 ] && line="$line, $askip skipped"
-	echo "$line ($atime s)"
+	echo "$line ($atime s, $acpu s CPU)"
 }
 # an area is reported as soon as all its tests are done, so a long test
 # holds back only its own area's lines
@@ -168,6 +181,14 @@ pool=""
 if [ "$times" != /dev/null ] && [ -f "$newtimes" ]; then
 	awk 'NR == FNR { t[$2] = $1; next } !($2 in t) { print } END { for (n in t) print t[n], n }' \
 		"$newtimes" "$times" | sort -k2 >"$times.tmp" && mv "$times.tmp" "$times"
+fi
+# this run's CPU seconds, those of the tests it did not run kept
+cputimes=$BUILD/test-cpu
+if [ -f "$newcpu" ] && { [ -f "$cputimes" ] || : >"$cputimes"; } 2>/dev/null; then
+	awk 'NR == FNR { t[$2] = $1; next } !($2 in t) { print } END { for (n in t) print t[n], n }' \
+		"$newcpu" "$cputimes" | sort -k2 >"$cputimes.tmp" && mv "$cputimes.tmp" "$cputimes"
+	total=$(awk '{ s += $1 } END { printf "%.0f", s }' "$newcpu")
+	echo "CPU time of the tests run: $total s"
 fi
 [ -n "$failed" ] && echo "failed:$failed"
 if [ $skip -gt 0 ]; then

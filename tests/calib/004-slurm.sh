@@ -7,6 +7,7 @@
 # or root the test skips.
 . "$TOP/tests/lib/common.sh"
 . "$TOP/tests/lib/slurm.sh"
+slurm_check
 cat >m.in <<'IN'
 wavelength 0.365
 na 0.6

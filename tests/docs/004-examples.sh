@@ -1,28 +1,27 @@
-# Every example README's commands run as printed: each command in
-# backquotes that starts with "sh " runs, exactly as written, from the
-# example's folder after the README's set-up (make at the top of the tree),
-# with the build's programs NOT on PATH (the scripts find the tree's
-# build), and exits 0 leaving files in the out/ folder it names (a command
-# that remakes a committed input, "sh make-mask.sh 40 >mask.in", the same
-# bytes as the committed file).  The
-# examples are copied beside a link build -> the build under test, so the
-# source tree gets no out/ folders.  A README of a folder with a script
-# must print its command and say to run make first; a command with a
+# Every example README's commands run as printed: each README of a folder
+# with a script prints its commands ("sh ..." in backquotes), says to run
+# make first, and names only scripts that exist there; a command with a
 # placeholder ("[SIZE]", array40: minutes and gigabytes, timed by make
-# bench) is only checked to name a script that exists.
+# bench) is only checked to name a script.  A command that remakes a
+# committed input ("sh make-mask.sh 40 >mask.in") runs here and must give
+# the same bytes as the committed file (tests/lib/examples.sh,
+# example_readme).  Every other command is run exactly as written, once per
+# make check, by the test that checks its outputs: every 3D example by
+# tests/examples/001-all.sh, 004 or 005, the 2D ones by 003-2d.sh,
+# examples/calibrate by tests/calib/003-example.sh (example_readme: from a
+# copy of the example's folder, the build's programs NOT on PATH, exit 0,
+# files left in out/).  Checked here: each such README is in the list those
+# tests run (examples_readme_run), and each of those tests calls
+# example_readme.
 . "$TOP/tests/lib/common.sh"
-built sample3D sample2D etch2d
-mkdir -p tree/examples
-ln -s "$BUILD" tree/build
-# every example folder (they share examples/resists), without any out/
-for d in "$TOP"/examples/*/; do
-	name=$(basename "$d")
-	mkdir "tree/examples/$name"
-	for f in "$d"*; do
-		[ "$(basename "$f")" = out ] || cp -R "$f" "tree/examples/$name/"
-	done
+. "$TOP/tests/lib/examples.sh"
+examples_readme_run | sort >covered.txt
+for t in examples/001-all.sh examples/003-2d.sh examples/004-all-defect.sh \
+	examples/005-all-corner-defect.sh calib/003-example.sh; do
+	grep -q '^[^#]*example_\(readme\|all\) ' "$TOP/tests/$t" ||
+		fail "tests/$t no longer runs its examples' README commands (example_readme)"
 done
-n=0
+n=0 ran=0
 for readme in "$TOP"/examples/*/README; do
 	d=$(dirname "$readme")
 	name=$(basename "$d")
@@ -31,22 +30,26 @@ for readme in "$TOP"/examples/*/README; do
 	[ -s cmds.txt ] || fail "examples/$name/README prints no command to run"
 	grep -q 'After `make` at the top of the tree' "$readme" ||
 		fail "examples/$name/README does not say to run make first"
+	remake=""
 	while IFS= read -r cmd; do
 		script=$(printf '%s\n' "$cmd" | awk '{ print $2 }')
 		[ -f "$d/$script" ] || fail "examples/$name/README: $cmd names no script there"
-		case $cmd in *'['*) continue ;; esac
-		(cd "tree/examples/$name" && PATH=/usr/bin:/bin sh -c "$cmd") >"$name.log" 2>&1 ||
-			fail "examples/$name: \"$cmd\" failed: $(tail -n 3 "$name.log")"
 		case $cmd in
-		*'>'*)  # it remakes a committed input: the same bytes
-			made=${cmd##*>}
-			same "tree/examples/$name/$made" "$d/$made" ;;
+		*'['*) ;;
+		*'>'*) remake=yes ;;
 		*)
-			[ -n "$(find "tree/examples/$name/out" -type f 2>/dev/null | head -n 1)" ] ||
-				fail "examples/$name: \"$cmd\" left nothing in out/" ;;
+			grep -qx "$name" covered.txt ||
+				fail "examples/$name/README: \"$cmd\" is run by no test (tests/lib/examples.sh)"
+			n=$((n + 1)) ;;
 		esac
-		n=$((n + 1))
 	done <cmds.txt
+	# a README no other test runs has only remakes and placeholders: its
+	# remakes run here
+	if [ -n "$remake" ] && ! grep -qx "$name" covered.txt; then
+		example_readme "$name"
+		ran=$((ran + 1))
+	fi
 done
-[ $n -ge 20 ] || fail "only $n example commands ran"
+[ $n -ge 20 ] || fail "only $n example commands are run"
+[ $ran -gt 0 ] || fail "no README remakes a committed input: update this test"
 exit 0

@@ -1,5 +1,6 @@
-# Every thesis example in examples/ runs end to end through its run.sh
-# (sample3D: splat, bleach, etch, pdraw) and leaves, in every run
+# Every thesis example in examples/ runs end to end through its README's
+# command as printed, "sh run.sh" (sample3D: splat, bleach, etch, pdraw),
+# and leaves, in every run
 # directory, a non-empty curves.plot that reads back as a plot file with
 # one set per print time, its curves.plot.2D, and a dataplot.ps that
 # ghostscript renders (when installed).  Against: the files each run must

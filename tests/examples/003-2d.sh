@@ -1,5 +1,6 @@
-# The 2D examples run end to end through their run.sh: examples/defect-
-# cutlines and examples/elbow-cutline (sample2D: splat, bleach -cutline,
+# The 2D examples run end to end through their README's command as
+# printed, "sh run.sh" (tests/lib/examples.sh, example_readme; outputs in
+# tree/examples/NAME/out): examples/defect-cutlines and examples/elbow-cutline (sample2D: splat, bleach -cutline,
 # etch2d, drawplot) leave in every run directory cut.2D, rval.2D.binary,
 # a profile.plot with one set per print time of the run's own command
 # (4: -et 20 -pt 5 and -et 60 -pt 15) and a profile2D.ps with as many
@@ -19,9 +20,10 @@
 # trust in the string); half-widths at 0.01 to 0.09 um above fast
 # marching's bottom.
 . "$TOP/tests/lib/common.sh"
-for name in defect-cutlines elbow-cutline algorithms; do
-	OUT=$PWD/$name sh "$TOP/examples/$name/run.sh" >"$name.log" 2>&1 ||
-		fail "example $name failed: $(tail -n 3 "$name.log")"
+. "$TOP/tests/lib/examples.sh"
+for name in $EXAMPLES_2D; do
+	example_readme "$name"
+	ln -s "tree/examples/$name/out" "$name"
 done
 for d in defect-cutlines/north-south defect-cutlines/east-west elbow-cutline; do
 	for f in cut.2D rval.2D.binary profile.plot profile2D.ps; do

@@ -1,10 +1,13 @@
 # The fuzzing harness builds (tests/fuzz/targets/fuzz.sh, clang's libFuzzer) and
 # each reader's target runs clean over its seed corpus and the regress
 # files of its reader, once each: no crash, no sanitizer report.  Skipped
-# without clang (CI installs it).
+# without clang (CI installs it).  The harness is built in BUILD/fuzz-check
+# and kept there: the next make check rebuilds only what changed since
+# (fuzz.sh compares each object with its sources, headers and fuzz.sh).
 . "$TOP/tests/lib/common.sh"
 need clang
-sh "$TOP/tests/fuzz/targets/fuzz.sh" once fz >out.txt 2>&1
+fz=$BUILD/fuzz-check
+sh "$TOP/tests/fuzz/targets/fuzz.sh" once "$fz" >out.txt 2>&1
 st=$?
 [ $st -ne 77 ] || skip "$(tail -n 1 out.txt)"
 [ $st -eq 0 ] || fail "fuzz targets: $(cat out.txt)"
@@ -17,7 +20,7 @@ n=$(grep -c '^fuzz: .*: [0-9][0-9]* executions, exit 0$' out.txt)
 # (new units go to the scratch corpus fdc/, named first, never to the tree)
 mkdir -p fdc
 (ulimit -n 32 && ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1 \
-	fz/fuzz_rate_binary -runs=3000 -seed=1 -close_fd_mask=2 -detect_leaks=0 \
+	"$fz/fuzz_rate_binary" -runs=3000 -seed=1 -close_fd_mask=2 -detect_leaks=0 \
 	fdc "$TOP/tests/fuzz/corpus/rate_binary" >fdleak.txt 2>&1) ||
 	fail "the rate reader leaks descriptors in process: $(grep -m 3 'ERROR\|SUMMARY' fdleak.txt)"
 exit 0

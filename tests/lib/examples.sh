@@ -1,13 +1,22 @@
-# tests/lib/examples.sh - the checks of the 3D example tests
-# (tests/examples/*), shared so that the longest examples can run as tests
-# of their own, which the parallel runner spreads over the cores; source it
-# after common.sh.
+# tests/lib/examples.sh - the checks of the example tests (tests/examples/*,
+# tests/calib/003-example.sh), shared so that the longest examples can run
+# as tests of their own, which the parallel runner spreads over the cores;
+# source it after common.sh.
+#
+# Each example runs once in make check: the test that checks its outputs
+# runs the commands of its README as printed (example_readme), and
+# tests/docs/004-examples.sh checks that every README command is run by
+# one of these tests (examples_readme_run).
 #
 # The 3D examples are examples/*/run.sh except the 2D ones (sample2D,
-# etch2d: 003-2d.sh's).  Those in EXAMPLES_OWN have tests of their own
-# (examples/004-007); 001-all.sh and 002-deloop.sh take every other one, so
-# an example added later is covered without a new test.
+# etch2d: 003-2d.sh's, EXAMPLES_2D).  Those in EXAMPLES_OWN have tests of
+# their own (examples/004-007); 001-all.sh and 002-deloop.sh take every
+# other one, so an example added later is covered without a new test.
 EXAMPLES_OWN="defect corner-defect"
+# the 2D examples, run and checked by tests/examples/003-2d.sh
+EXAMPLES_2D="defect-cutlines elbow-cutline algorithms"
+# run and checked by tests/calib/003-example.sh
+EXAMPLES_CALIB="calibrate"
 # The examples whose run.sh makes surfaces for measure (a contact at the
 # cell's centre): example_all measures every curves.plot they leave.
 EXAMPLES_MEASURED="car-arf-contact contact-highna"
@@ -22,19 +31,69 @@ examples_rest() {
 	done
 }
 
-# example_all NAME: examples/NAME runs end to end through its run.sh
-# (sample3D: splat, bleach, etch, pdraw) and leaves, in every run
+# examples_readme_run: the examples whose README commands these tests run
+# (every 3D example, EXAMPLES_2D and EXAMPLES_CALIB), one name a line.
+examples_readme_run() {
+	examples_rest
+	for _name in $EXAMPLES_OWN $EXAMPLES_2D $EXAMPLES_CALIB; do echo "$_name"; done
+}
+
+# example_readme NAME: every command examples/NAME/README prints in
+# backquotes starting with "sh " runs exactly as written, from the
+# example's folder after the README's set-up (make at the top of the
+# tree), with the build's programs NOT on PATH (the scripts find the
+# tree's build), and exits 0 leaving files in the out/ folder (a command
+# that remakes a committed input, "sh make-mask.sh 40 >mask.in", the same
+# bytes as the committed file); a command with a placeholder ("[SIZE]") is
+# not run.  The examples are copied (without any out/) into
+# tree/examples beside a link tree/build -> the build under test, so the
+# source tree gets no out/ folders: the outputs are in
+# tree/examples/NAME/out, the commands' output in NAME.log.
+example_readme() {
+	_readme=$TOP/examples/$1/README
+	[ -f "$_readme" ] || fail "no examples/$1/README"
+	if [ ! -d tree/examples ]; then
+		mkdir -p tree/examples
+		ln -s "$BUILD" tree/build
+		# every example folder (they share examples/resists and inputs)
+		for _d in "$TOP"/examples/*/; do
+			_n=$(basename "$_d")
+			mkdir "tree/examples/$_n"
+			for _f in "$_d"*; do
+				[ "$(basename "$_f")" = out ] || cp -R "$_f" "tree/examples/$_n/"
+			done
+		done
+	fi
+	grep -o '`sh [^`]*`' "$_readme" | tr -d '`' >"$1.cmds"
+	[ -s "$1.cmds" ] || fail "examples/$1/README prints no command to run"
+	: >"$1.log"
+	while IFS= read -r _cmd; do
+		case $_cmd in *'['*) continue ;; esac
+		(cd "tree/examples/$1" && PATH=/usr/bin:/bin sh -c "$_cmd") >>"$1.log" 2>&1 </dev/null ||
+			fail "examples/$1: \"$_cmd\" failed: $(tail -n 3 "$1.log")"
+		case $_cmd in
+		*'>'*)  # it remakes a committed input: the same bytes
+			_made=${_cmd##*>}
+			same "tree/examples/$1/$_made" "$TOP/examples/$1/$_made" ;;
+		*)
+			[ -n "$(find "tree/examples/$1/out" -type f 2>/dev/null | head -n 1)" ] ||
+				fail "examples/$1: \"$_cmd\" left nothing in out/" ;;
+		esac
+	done <"$1.cmds"
+}
+
+# example_all NAME: the commands of examples/NAME/README run as printed
+# (example_readme; for a 3D example, its run.sh: sample3D runs splat,
+# bleach, etch, pdraw) and leave, in every run
 # directory, a non-empty curves.plot that reads back as a plot file with
 # one set per print time, its curves.plot.2D, and a dataplot.ps with a page
 # per set that ghostscript renders (when installed).  For the examples of
 # EXAMPLES_MEASURED, measure reads every curves.plot (the hole at 0 0, at
 # 10, 50 and 90 % of the resist) and finds the hole open at 90 %.
 example_all() {
-	_run=$TOP/examples/$1/run.sh
-	[ -f "$_run" ] || fail "no example $1"
-	OUT=$PWD/$1 sh "$_run" -q >"$1.log" 2>&1 || fail "example $1 failed: $(tail -n 3 "$1.log")"
+	example_readme "$1"
 	_n=0
-	for _plot in $(find "$1" -name curves.plot | sort); do
+	for _plot in $(find "tree/examples/$1/out" -name curves.plot | sort); do
 		_d=$(dirname "$_plot")
 		[ -s "$_d/curves.plot.2D" ] || fail "$_d: curves.plot.2D missing"
 		[ -s "$_d/dataplot.ps" ] || fail "$_d: dataplot.ps missing"

@@ -311,6 +311,22 @@ static void cell_count(const struct flat *f, int ci)
 	c->counted = 1;
 }
 
+/* walk_count's count of the last `left` copies of the reference e once
+ * its steps are spent: each copy's cell counted whole (as walk_count adds
+ * a cell it no longer walks into), and for an array each copy but the
+ * first one more element visited (`past_first`: the first is not among
+ * them). */
+static void count_rest(const struct flat *f, const struct elem *e, double left, int past_first,
+		       double *n)
+{
+	const struct cell *c = &f->g->c[e->ref];
+	if (!c->empty)
+		for (int k = 0; k < 3; k++)
+			n[k] += left * c->cnt[k];
+	if (e->kind == R_AREF)
+		n[2] += left - !past_first;
+}
+
 /* The counts of what flattening cell ci under t keeps with the window:
  * a cell wholly inside adds its bottom-up counts, one wholly outside
  * nothing, and one across the window's edge is walked into.  After
@@ -361,6 +377,14 @@ static void walk_count(struct flat *f, int ci, const struct xform *t, double *n,
 		}
 		for (int j = 0; j < e->rows; j++)
 			for (int i = 0; i < e->cols; i++) {
+				if (*steps > COUNT_STEPS) {
+					/* the copies left are counted whole at once, as
+					 * the walk would add each (an array of 32767 x
+					 * 32767 is 1e9 copies) */
+					count_rest(f, e, (double)(e->rows - j) * e->cols - i, i || j, n);
+					j = e->rows;
+					break;
+				}
 				double x = px[0], y = py[0];
 				if (e->kind == R_AREF) {
 					x += (px[1] - px[0]) * i / e->cols + (px[2] - px[0]) * j / e->rows;

@@ -22,6 +22,10 @@ mode=${1:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 dir=${2:?usage: fuzz.sh build|run|once DIR [SECONDS]}
 secs=${3:-60}
 top=$(cd "$(dirname "$0")/../../.." && pwd)
+# DIR is reused: an object older than its source, than a library header or
+# than this script (its flags) is rebuilt, a target older than an object
+# relinked
+self=$top/tests/fuzz/targets/fuzz.sh
 CLANG=${FUZZ_CC:-clang}
 READERS="splat bleach contour stack plot2d plot3d options template rate_ascii rate_binary gds measure_args fem_args"
 FLAGS="-g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -D_XOPEN_SOURCE=700 -std=c11"
@@ -39,7 +43,8 @@ done
 for src in "$top"/src/lib/*/*.c; do
 	case $src in */draw_x11.c) continue ;; esac
 	o=$dir/obj/$(basename "$src" .c).o
-	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$top/src/lib" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
+	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ "$self" -nt "$o" ] ||
+	   [ -n "$(find "$top/src/lib" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
 		echo "$CLANG -fsanitize=fuzzer-no-link $FLAGS -c -o $o $src"
 	fi
 done | xargs -P 2 -I{} sh -c '{}' || { echo "fuzz: building the library failed" >&2; exit 1; }
@@ -48,7 +53,8 @@ mobjs=""
 for src in "$top"/src/measure/*.c; do
 	o=$dir/obj/measure_$(basename "$src" .c).o
 	mobjs="$mobjs $o"
-	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$top/src" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
+	if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ "$self" -nt "$o" ] ||
+	   [ -n "$(find "$top/src" -name '*.h' -newer "$o" 2>/dev/null)" ]; then
 		$CLANG -fsanitize=fuzzer-no-link $FLAGS -I"$top/src/measure" -Dmain=measure_main \
 			-c -o "$o" "$src" || { echo "fuzz: building measure failed" >&2; exit 1; }
 	fi
@@ -59,8 +65,8 @@ for r in $READERS; do
 	src=$top/tests/fuzz/targets/fuzz_reader.c
 	[ "$r" = gds ] && src=$top/tests/fuzz/fuzz_gds.c
 	case $r in *_args) src=$top/tests/fuzz/targets/fuzz_args.c ;; esac
-	if [ ! -x "$t" ] || [ "$src" -nt "$t" ] ||
-	   [ -n "$(find "$dir/obj" -name '*.o' -newer "$t")" ]; then
+	if [ ! -x "$t" ] || [ "$src" -nt "$t" ] || [ "$self" -nt "$t" ] ||
+	   [ -n "$(find "$dir/obj" "$top/tests/fuzz/targets" -name '*.[ho]' -newer "$t")" ]; then
 		if [ "$r" = gds ]; then
 			$CLANG -fsanitize=fuzzer $FLAGS -DS3D_LIBFUZZER -o "$t" "$src" $objs -lm ||
 				{ echo "fuzz: linking $r failed" >&2; exit 1; }
