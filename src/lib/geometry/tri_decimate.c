@@ -10,8 +10,8 @@
  * where the lists are read and unlinked where a vertex's neighbours are
  * listed (a vertex opposite a collapsed edge would otherwise carry its
  * dead corners to the end, two for each live one).  Every vertex has at most one entry in a
- * binary heap, updated in place: its cheapest collapse by the cost, the
- * box and boundary rules and the shape, keyed (cost, vertex); after a collapse
+ * binary heap, updated in place: its cheapest collapse by the cost and
+ * the box and boundary rules, keyed (cost, vertex); after a collapse
  * u -> v, v and its neighbours are re-evaluated (their triangles or
  * their targets' quadrics changed).  A popped collapse is checked in full
  * before it is made (one that fails re-ranks its vertex by every check),
@@ -62,6 +62,8 @@ struct dmesh {
 	unsigned *mark;
 	unsigned stamp;
 	int *cnt;               /* per vertex: triangles shared with consider's u */
+	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
+				 * consider(u, 0) would give now */
 	int *ring, *ring2;
 	size_t cring, cring2;
 };
@@ -578,14 +580,13 @@ static int cand_cmp(const void *a, const void *b)
 	return (p->v > q->v) - (p->v < q->v);
 }
 
-/* pushes u's cheapest collapse: with full 0 the cheapest that passes the
- * cost and shape checks (shape_ok: on a marching-tetrahedra soup most
- * candidates fail it, and an entry that fails when popped costs a full
- * re-ranking; the link and input checks run when popped), 1 the cheapest that passes the
+/* pushes u's cheapest collapse: with full 0 the cheapest by the cost
+ * alone (checked in full when popped), 1 the cheapest that passes the
  * topology and shape checks (valid), 2 the cheapest that passes every
  * check (valid and points_ok) */
 static void consider(struct dmesh *m, struct heap *h, int u, int full)
 {
+	m->exact[u] = full == 0;
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
 		heap_remove(h, u);
 		return;
@@ -602,16 +603,15 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 		heap_remove(h, u);
 		return;
 	}
-	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
 	if (!full) {
-		for (size_t i = 0; i < nc; i++)
-			if (shape_ok(m, u, m->cands[i].v)) {
-				heap_set(h, (struct entry){m->cands[i].cost, u, m->cands[i].v});
-				return;
-			}
-		heap_remove(h, u);
+		struct cand b = m->cands[0];
+		for (size_t i = 1; i < nc; i++)
+			if (cand_cmp(&m->cands[i], &b) < 0)
+				b = m->cands[i];
+		heap_set(h, (struct entry){b.cost, u, b.v});
 		return;
 	}
+	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
 	for (size_t i = 0; i < nc; i++) {
 		double c;
 		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
@@ -754,6 +754,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
+	m.exact = xcalloc(m.nv + 1, 1);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
 	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
 	m.tol = tol;
@@ -833,10 +834,11 @@ static void collapse_all(struct dmesh *mp)
 		h.pos[i] = -1;
 	for (size_t i = 0; i < m.nv; i++)
 		consider(&m, &h, (int)i, 0);
-	int *nb = NULL;
-	size_t cnb = 0;
+	int *nb = NULL, *nbc = NULL;
+	size_t cnb = 0, cnbc = 0;
 	while (h.n) {
 		struct entry e = heap_pop(&h);
+		m.exact[e.u] = 0;
 		double c;
 		/* a failed collapse re-ranks u by the checks it failed:
 		 * the topology and shape alone (the input checks, which
@@ -852,15 +854,34 @@ static void collapse_all(struct dmesh *mp)
 		}
 		collapse(&m, e.u, e.v);
 		consider(&m, &h, e.v, 0);
-		/* v's neighbours: their collapses onto v (v's quadric
-		 * changed) or onto u (gone) are not as they were, and
-		 * the shapes of all their collapses may have changed
-		 * (their triangles that held u hold v) */
-		size_t k = ring_of(&m, e.v, &nb, &cnb);
+		/* v's neighbours: only their collapses onto v (v's
+		 * quadric and the triangles they share with it changed)
+		 * or onto u (gone) are not as they were, so one whose
+		 * entry is consider(, 0)'s and aims at neither needs
+		 * only its collapse onto v weighed against it (the
+		 * same entry as a full consider) */
+		size_t k = ring_cnt(&m, e.v, &nb, &cnb);
+		xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
 		for (size_t i = 0; i < k; i++)
-			consider(&m, &h, nb[i], 0);
+			nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+		for (size_t i = 0; i < k; i++) {
+			int w = nb[i];
+			long p = h.pos[w];
+			if (!m.exact[w] || (p >= 0 && (h.e[p].v == e.u || h.e[p].v == e.v))) {
+				consider(&m, &h, w, 0);
+				continue;
+			}
+			if (m.flag[w] & (F_LOCKED | F_DEAD))
+				continue;
+			if (!valid_cheap(&m, w, e.v, nbc[i], &c))
+				continue;
+			struct cand a = {c, e.v};
+			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+				heap_set(&h, (struct entry){c, w, e.v});
+		}
 	}
 	free(nb);
+	free(nbc);
 	free(h.e);
 	free(h.pos);
 	*mp = m;
@@ -874,6 +895,7 @@ static void dmesh_free(struct dmesh *m)
 	free(m->flag);
 	free(m->mark);
 	free(m->cnt);
+	free(m->exact);
 	free(m->head);
 	free(m->next);
 	free(m->tv);
