@@ -121,7 +121,10 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * dense, each set is decimated with the bound tol, um, in tiles
  * (fmm_decimate_tile; tol < 0: fmm_default_tol), or with tol 0 only its exactly flat regions
  * are written as large triangles (fmm_compact); the sets are extracted
- * in parallel (par.h), byte-identical for any thread count. */
+ * in parallel (par.h), byte-identical for any thread count.  Decimated
+ * sets are extracted and decimated tile by tile (one job per set and
+ * tile, only the decimated triangles kept), and a tile whose nodes all
+ * developed before the previous set's time is copied from that set. */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 		      const char *path3d, const char *path2d, int dense, double tol);
 

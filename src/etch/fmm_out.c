@@ -56,14 +56,21 @@ static void filter_emit(void *ctx, const double tri[9])
 	fl->count++;
 }
 
-/* t <= 0: the resist top, two triangles per cell on the iso.h diagonal,
- * normals down into the resist */
-static long flat_top(const struct fmm *f, iso_emit emit, void *ctx)
+/* t <= 0: the resist top over the columns c0[d] <= i < c1[d] (clipped to
+ * the grid's), two triangles per cell on the iso.h diagonal, normals
+ * down into the resist */
+static long flat_top(const struct fmm *f, const int c0[2], const int c1[2], iso_emit emit,
+		     void *ctx)
 {
 	long count = 0;
 	double z = f->bounds[5];
-	for (int j = 0; j + 1 < f->n[1]; j++)
-		for (int i = 0; i + 1 < f->n[0]; i++) {
+	int lo[2], hi[2];
+	for (int d = 0; d < 2; d++) {
+		lo[d] = c0[d] < 0 ? 0 : c0[d];
+		hi[d] = c1[d] > f->n[d] - 1 ? f->n[d] - 1 : c1[d];
+	}
+	for (int j = lo[1]; j < hi[1]; j++)
+		for (int i = lo[0]; i < hi[0]; i++) {
 			double x0 = f->bounds[0] + i * f->h[0], y0 = f->bounds[2] + j * f->h[1];
 			double x1 = i + 2 == f->n[0] ? f->bounds[1] : x0 + f->h[0];
 			double y1 = j + 2 == f->n[1] ? f->bounds[3] : y0 + f->h[1];
@@ -76,21 +83,31 @@ static long flat_top(const struct fmm *f, iso_emit emit, void *ctx)
 	return count;
 }
 
-long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx)
+/* The surface over the cells c0[d] <= i < c1[d] (iso_surface_window's
+ * numbering, the pad's layers included): fmm_surface for a part of the
+ * grid, the parts of a partition giving its triangles in its order. */
+static long surface_window(const struct fmm *f, double t, const int c0[3], const int c1[3],
+			   iso_emit emit, void *ctx)
 {
 	/* a surface needs cells: a grid one node thick in some axis has none */
 	if (f->n[0] < 2 || f->n[1] < 2 || f->n[2] < 2)
 		return 0;
 	if (t <= 0)
-		return flat_top(f, emit, ctx);
+		return flat_top(f, c0, c1, emit, ctx);
 	struct filter fl = {f, {0, 0, 0}, emit, ctx, 0};
 	/* iso.h snaps face caps onto the faces exactly; a millionth of a cell
 	 * only guards against the rounding of a face coordinate */
 	for (int d = 0; d < 3; d++)
 		fl.tol[d] = 1e-6 * f->h[d];
-	iso_surface_speed(f->t, f->rate, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, filter_emit,
-			  &fl);
+	iso_surface_window(f->t, f->rate, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, c0, c1,
+			   filter_emit, &fl);
 	return fl.count;
+}
+
+long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx)
+{
+	int c0[3] = {-1, -1, -1}, c1[3] = {f->n[0], f->n[1], f->n[2]};
+	return surface_window(f, t, c0, c1, emit, ctx);
 }
 
 struct tris {
@@ -128,19 +145,6 @@ static struct tiling tiling_of(const struct fmm *f)
 	return tl;
 }
 
-/* the tile of a triangle: that of the cell holding its centroid */
-static int tile_of(const struct fmm *f, const struct tiling *tl, const double *t)
-{
-	int a[2];
-	for (int d = 0; d < 2; d++) {
-		double c = (t[d] + t[3 + d] + t[6 + d]) / 3;
-		long i = f->h[d] > 0 ? (long)floor((c - f->bounds[2 * d]) / f->h[d]) : 0;
-		i = i < 0 ? 0 : i >= tl->cells[d] ? tl->cells[d] - 1 : i;
-		a[d] = (int)(i * tl->ntile[d] / tl->cells[d]);
-	}
-	return a[1] * tl->ntile[0] + a[0];
-}
-
 /* tile k's seams: its sides inside the box (outer sides: none) */
 static void tile_keep(const struct fmm *f, const struct tiling *tl, int k, double keep[4])
 {
@@ -164,9 +168,12 @@ size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, c
 	return tri_decimate(v, n, tol, 1e-9 * h, f->bounds, 1e-9 * h, keep, NULL);
 }
 
-/* The solution sampled at every refine[d]-th node: the rate grid. */
+/* The solution sampled at every refine[d]-th node: the rate grid (f
+ * itself without refinement: the caller frees only a copy). */
 static struct fmm *coarse_view(const struct fmm *f)
 {
+	if (f->refine[0] <= 1 && f->refine[1] <= 1 && f->refine[2] <= 1)
+		return (struct fmm *)f;        /* the rate grid itself: shared, not copied */
 	struct fmm *c = xcalloc(1, sizeof *c);
 	*c = *f;
 	size_t r[3], total = 1;
@@ -208,18 +215,13 @@ static void get2(void *ctx, size_t i, double *c)
 	memcpy(c, q, sizeof q);
 }
 
-/* the sets of one batch, extracted in parallel: one per time */
+/* Dense sets (-dense, -tol 0): a batch of sets extracted in parallel, one
+ * set per job, so the triangles do not depend on the thread count. */
 struct batch {
 	const struct fmm *f;
 	const double *times;
 	struct tris *tr;
 	int dense;
-	double tol;             /* decimation bound, um (0: exact-flat compaction only) */
-	/* decimation: set s's triangles grouped by tile, job j = s * ntiles + k
-	 * the triangles first[j] to first[j] + count[j] - 1 of set s, count[j]
-	 * then the number kept */
-	struct tiling tl;
-	size_t *first, *count;
 };
 
 static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
@@ -230,66 +232,199 @@ static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
 		struct tris *tr = &b->tr[k];
 		tr->n = 0;
 		fmm_surface(b->f, b->times[k], collect, tr);
-		if (!b->dense && !(b->tol > 0))
+		if (!b->dense)
 			tr->n = fmm_compact(b->f, &tr->v, tr->n, &tr->cap);
 	}
 }
 
-static void decimate_range(void *ctx, size_t lo, size_t hi, int worker)
+/* Decimated sets: every (set, tile) of a batch is one job that extracts
+ * the tile's cells alone (surface_window) and decimates them, so a job's
+ * memory is bounded by its tile's dense soup and only the decimated
+ * triangles are kept; a tile whose nodes all developed before the
+ * previous set's time holds the same surface (the substrate) and is
+ * copied from that set instead. */
+struct tiled {
+	const struct fmm *f;
+	const double *times;    /* the batch's times; times[-1] the previous set's if prev */
+	int prev;               /* a set was written before the batch */
+	double tol;
+	struct tiling tl;
+	const double *tmax;     /* per tile: the latest arrival time of its nodes */
+	struct tris *out;       /* per job (set q, tile k: q * ntiles + k) */
+	struct tris *scratch;   /* per worker: the dense soup of a tile */
+};
+
+/* the cells of tile k along x and y (iso_surface_window's numbering: the
+ * first and last tiles take the pad's layer), all of z */
+static void tile_cells(const struct fmm *f, const struct tiling *tl, int k, int c0[3], int c1[3])
 {
-	(void)worker;
-	struct batch *b = ctx;
-	size_t nt = (size_t)b->tl.ntile[0] * (size_t)b->tl.ntile[1];
-	for (size_t j = lo; j < hi; j++) {
-		double keep[4];
-		tile_keep(b->f, &b->tl, (int)(j % nt), keep);
-		b->count[j] = fmm_decimate_tile(b->f, b->tr[j / nt].v + 9 * b->first[j], b->count[j],
-						b->tol, keep);
+	int a[2] = {k % tl->ntile[0], k / tl->ntile[0]};
+	for (int d = 0; d < 2; d++) {
+		/* the first cell of tile t: least i with i * nt / cells >= t */
+		long i0 = ((long)a[d] * tl->cells[d] + tl->ntile[d] - 1) / tl->ntile[d];
+		long i1 = ((long)(a[d] + 1) * tl->cells[d] + tl->ntile[d] - 1) / tl->ntile[d];
+		c0[d] = a[d] == 0 ? -1 : (int)i0;
+		c1[d] = a[d] + 1 == tl->ntile[d] ? f->n[d] : (int)i1;
 	}
+	c0[2] = -1;
+	c1[2] = f->n[2];
 }
 
-/* set tr's triangles grouped by tile (stably), their ranges in first and
- * count */
-static void group(const struct fmm *f, const struct tiling *tl, struct tris *tr, size_t *first,
-		  size_t *count)
+/* per tile, the latest arrival time over the nodes of its cells */
+static double *tile_tmax(const struct fmm *f, const struct tiling *tl)
 {
 	size_t nt = (size_t)tl->ntile[0] * (size_t)tl->ntile[1];
-	int *tile = xreallocarray(NULL, tr->n + 1, sizeof *tile);
-	memset(count, 0, nt * sizeof *count);
-	for (size_t i = 0; i < tr->n; i++) {
-		tile[i] = tile_of(f, tl, tr->v + 9 * i);
-		count[tile[i]]++;
-	}
-	size_t at = 0;
+	double *m = xreallocarray(NULL, nt, sizeof *m);
 	for (size_t k = 0; k < nt; k++) {
-		first[k] = at;
-		at += count[k];
+		int c0[3], c1[3];
+		tile_cells(f, tl, (int)k, c0, c1);
+		double w = -INFINITY;
+		for (int kz = 0; kz < f->n[2]; kz++)
+			for (int j = c0[1] < 0 ? 0 : c0[1]; j <= c1[1] && j < f->n[1]; j++) {
+				const double *row = f->t + ((size_t)kz * (size_t)f->n[1] + (size_t)j) *
+								   (size_t)f->n[0];
+				for (int i = c0[0] < 0 ? 0 : c0[0]; i <= c1[0] && i < f->n[0]; i++)
+					w = fmax(w, row[i]);
+			}
+		m[k] = w;
 	}
-	if (nt > 1) {
-		double *w = xreallocarray(NULL, 9 * tr->n + 1, sizeof *w);
-		size_t *fill = xcalloc(nt, sizeof *fill);
-		for (size_t i = 0; i < tr->n; i++) {
-			size_t k = (size_t)tile[i];
-			memcpy(w + 9 * (first[k] + fill[k]++), tr->v + 9 * i, 9 * sizeof *w);
-		}
-		free(fill);
-		free(tr->v);
-		tr->v = w;
-		tr->cap = 9 * tr->n + 1;
-	}
-	free(tile);
+	return m;
 }
 
-/* the kept triangles of each tile moved together, in tile order */
-static void ungroup(struct tris *tr, const size_t *first, const size_t *count, size_t nt)
+/* whether set q of the batch copies tile k from the set before it */
+static int tile_same(const struct tiled *b, int q, size_t k)
 {
-	size_t out = 0;
-	for (size_t k = 0; k < nt; k++) {
-		if (out != first[k])
-			memmove(tr->v + 9 * out, tr->v + 9 * first[k], 9 * count[k] * sizeof *tr->v);
-		out += count[k];
+	if (q == 0 && !b->prev)
+		return 0;
+	double t0 = b->times[q - 1], t1 = b->times[q];
+	return t0 > 0 && t1 > 0 && b->tmax[k] < t0 && b->tmax[k] < t1;
+}
+
+static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct tiled *b = ctx;
+	size_t nt = (size_t)b->tl.ntile[0] * (size_t)b->tl.ntile[1];
+	struct tris *sc = &b->scratch[worker];
+	for (size_t j = lo; j < hi; j++) {
+		int q = (int)(j / nt), k = (int)(j % nt);
+		struct tris *o = &b->out[j];
+		o->n = 0;
+		if (tile_same(b, q, (size_t)k))
+			continue;
+		int c0[3], c1[3];
+		double keep[4];
+		tile_cells(b->f, &b->tl, k, c0, c1);
+		tile_keep(b->f, &b->tl, k, keep);
+		sc->n = 0;
+		surface_window(b->f, b->times[q], c0, c1, collect, sc);
+		size_t n = fmm_decimate_tile(b->f, sc->v, sc->n, b->tol, keep);
+		o->v = xreallocarray(o->v, 9 * n + 1, sizeof *o->v);
+		o->cap = 9 * n + 1;
+		memcpy(o->v, sc->v, 9 * n * sizeof *o->v);
+		o->n = n;
 	}
-	tr->n = out;
+}
+
+/* one set's tiles as one list of triangles (for the writers' get) */
+struct set_view {
+	const struct tris *tile;
+	const size_t *start;    /* ntiles + 1 prefix sums of the counts */
+	size_t nt;
+};
+
+static const double *view_tri(const struct set_view *sv, size_t i)
+{
+	size_t lo = 0, hi = sv->nt;     /* the tile k with start[k] <= i < start[k + 1] */
+	while (hi - lo > 1) {
+		size_t mid = (lo + hi) / 2;
+		if (sv->start[mid] <= i)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return sv->tile[lo].v + 9 * (i - sv->start[lo]);
+}
+
+static void view3(void *ctx, size_t i, double *c)
+{
+	const double *v = view_tri(ctx, i);
+	memcpy(c, v, 9 * sizeof *c);
+	memcpy(c + 9, v, 3 * sizeof *c);
+}
+
+static void view2(void *ctx, size_t i, double *c)
+{
+	const double *v = view_tri(ctx, i);
+	double q[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
+	memcpy(c, q, sizeof q);
+}
+
+static void write_set(struct plot_writer *w3, struct plot_writer *w2, const struct fmm *f,
+		      double t, size_t n, void (*g3)(void *, size_t, double *),
+		      void (*g2)(void *, size_t, double *), void *ctx)
+{
+	if (n > PLOT_MAX_COUNT)
+		die("fmm: %zu triangles at t = %g s, more than a plot file holds", n, t);
+	if (w3) {
+		fmt_plot_begin_set(w3, f->bounds, (long)n);
+		fmt_plot_curves(w3, n, 4, g3, ctx);
+	}
+	if (w2) {
+		fmt_plot_begin_set(w2, f->bounds, (long)n);
+		fmt_plot_curves(w2, n, 4, g2, ctx);
+	}
+}
+
+static void write_tiled(const struct fmm *f, const double *times, int ntimes,
+			struct plot_writer *w3, struct plot_writer *w2, double tol)
+{
+	int nb = par_threads();
+	struct tiled b = {f, times, 0, tol, tiling_of(f), NULL, NULL, NULL};
+	size_t nt = (size_t)b.tl.ntile[0] * (size_t)b.tl.ntile[1];
+	double *tmax = tile_tmax(f, &b.tl);
+	b.tmax = tmax;
+	struct tris *out = xcalloc((size_t)nb * nt, sizeof *out);
+	struct tris *last = xcalloc(nt, sizeof *last);  /* the previous set's tiles */
+	b.scratch = xcalloc((size_t)nb, sizeof *b.scratch);
+	size_t *start = xreallocarray(NULL, nt + 1, sizeof *start);
+	for (int k0 = 0; k0 < ntimes; k0 += nb) {
+		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
+		b.times = times + k0;
+		b.prev = k0 > 0;
+		b.out = out;
+		par_for((size_t)m * nt, 1, tile_range, &b);
+		for (int q = 0; q < m; q++) {
+			struct tris *set = out + (size_t)q * nt;
+			start[0] = 0;
+			for (size_t k = 0; k < nt; k++) {
+				if (tile_same(&b, q, k)) {
+					const struct tris *from = q > 0 ? &out[(size_t)(q - 1) * nt + k] : &last[k];
+					set[k].v = xreallocarray(set[k].v, 9 * from->n + 1, sizeof *set[k].v);
+					memcpy(set[k].v, from->v, 9 * from->n * sizeof *from->v);
+					set[k].n = from->n;
+				}
+				start[k + 1] = start[k] + set[k].n;
+			}
+			struct set_view sv = {set, start, nt};
+			write_set(w3, w2, f, times[k0 + q], start[nt], view3, view2, &sv);
+		}
+		for (size_t k = 0; k < nt; k++) {       /* the batch's last set is kept */
+			struct tris x = last[k];
+			last[k] = out[(size_t)(m - 1) * nt + k];
+			out[(size_t)(m - 1) * nt + k] = x;
+		}
+	}
+	for (size_t j = 0; j < (size_t)nb * nt; j++)
+		free(out[j].v);
+	for (size_t k = 0; k < nt; k++)
+		free(last[k].v);
+	for (int q = 0; q < nb; q++)
+		free(b.scratch[q].v);
+	free(out);
+	free(last);
+	free(b.scratch);
+	free(start);
+	free(tmax);
 }
 
 void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
@@ -302,50 +437,26 @@ void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,
 	struct plot_writer *w2 = path2d ? fmt_plot_open(path2d, 2) : NULL;
 	fmt_plot_labels(w3, fmt_labels_std(LABELS_SURFACE));
 	fmt_plot_labels(w2, fmt_labels_std(LABELS_TOPVIEW));
-	/* sets are extracted a thread's worth at a time (each set is one
-	 * thread's work, so the triangles do not depend on the thread
-	 * count), and written in order */
-	int nb = par_threads();
-	struct tris *all = xcalloc((size_t)nb, sizeof *all);
-	struct tiling tl = tiling_of(f);
-	size_t nt = (size_t)tl.ntile[0] * (size_t)tl.ntile[1];
-	size_t *first = xreallocarray(NULL, (size_t)nb * nt, sizeof *first);
-	size_t *count = xreallocarray(NULL, (size_t)nb * nt, sizeof *count);
-	for (int k0 = 0; k0 < ntimes; k0 += nb) {
-		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
-		struct batch b = {f, times + k0, all, dense, tol, tl, first, count};
-		par_for((size_t)m, 1, extract_range, &b);
-		if (!dense && tol > 0) {
-			/* every tile of every set one job: parallel even for one
-			 * set, and the memory a job needs bounded by the tile */
+	if (!dense && tol > 0) {
+		write_tiled(f, times, ntimes, w3, w2, tol);
+	} else {
+		/* sets are extracted a thread's worth at a time and written
+		 * in order */
+		int nb = par_threads();
+		struct tris *all = xcalloc((size_t)nb, sizeof *all);
+		for (int k0 = 0; k0 < ntimes; k0 += nb) {
+			int m = ntimes - k0 < nb ? ntimes - k0 : nb;
+			struct batch b = {f, times + k0, all, dense};
+			par_for((size_t)m, 1, extract_range, &b);
 			for (int q = 0; q < m; q++)
-				group(f, &tl, &all[q], first + (size_t)q * nt, count + (size_t)q * nt);
-			par_for((size_t)m * nt, 1, decimate_range, &b);
-			for (int q = 0; q < m; q++)
-				ungroup(&all[q], first + (size_t)q * nt, count + (size_t)q * nt, nt);
+				write_set(w3, w2, f, times[k0 + q], all[q].n, get3, get2, &all[q]);
 		}
-		for (int q = 0; q < m; q++) {
-			struct tris *tr = &all[q];
-			int k = k0 + q;
-			if (tr->n > PLOT_MAX_COUNT)
-				die("fmm: %zu triangles at t = %g s, more than a plot file holds",
-				    tr->n, times[k]);
-			if (w3) {
-				fmt_plot_begin_set(w3, f->bounds, (long)tr->n);
-				fmt_plot_curves(w3, tr->n, 4, get3, tr);
-			}
-			if (w2) {
-				fmt_plot_begin_set(w2, f->bounds, (long)tr->n);
-				fmt_plot_curves(w2, tr->n, 4, get2, tr);
-			}
-		}
+		for (int q = 0; q < nb; q++)
+			free(all[q].v);
+		free(all);
 	}
-	for (int q = 0; q < nb; q++)
-		free(all[q].v);
-	free(all);
-	free(first);
-	free(count);
-	fmm_free(f);
+	if (f != fine)
+		fmm_free(f);
 	if (w3)
 		fmt_plot_close(w3);
 	if (w2)

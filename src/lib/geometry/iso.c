@@ -198,6 +198,17 @@ long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6]
 long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
 		       const double bounds[6], double level, int closed, iso_emit emit, void *ctx)
 {
+	int lo = closed ? -1 : 0, n[3] = {nx, ny, nz};
+	int c0[3] = {lo, lo, lo}, c1[3];
+	for (int d = 0; d < 3; d++)
+		c1[d] = n[d] - 1 - lo;
+	return iso_surface_window(f, w, nx, ny, nz, bounds, level, closed, c0, c1, emit, ctx);
+}
+
+long iso_surface_window(const double *f, const double *w, int nx, int ny, int nz,
+			const double bounds[6], double level, int closed, const int c0[3],
+			const int c1[3], iso_emit emit, void *ctx)
+{
 	struct grid g = {f, w, {nx, ny, nz}, bounds, level, closed};
 	/* the six tetrahedra of the Kuhn split: 0, e_a, e_a+e_b, 1 for each
 	 * order (a, b, c) of the axes; corners numbered x + 2y + 4z */
@@ -208,16 +219,25 @@ long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
 	double scale = 0;
 	for (int d = 0; d < 3; d++)
 		scale = fmax(scale, (bounds[2 * d + 1] - bounds[2 * d]) / (g.n[d] - 1));
-	int lo = closed ? -1 : 0;
+	/* the cells asked for, within those the grid (and its pad) has */
+	int lo = closed ? -1 : 0, b0[3], b1[3];
+	for (int d = 0; d < 3; d++) {
+		b0[d] = c0[d] < lo ? lo : c0[d];
+		b1[d] = c1[d] > g.n[d] - 1 - lo ? g.n[d] - 1 - lo : c1[d];
+	}
 	long count = 0;
-	for (int k = lo; k < nz - 1 - lo; k++)
-		for (int j = lo; j < ny - 1 - lo; j++)
-			for (int i = lo; i < nx - 1 - lo; i++) {
+	for (int k = b0[2]; k < b1[2]; k++)
+		for (int j = b0[1]; j < b1[1]; j++)
+			for (int i = b0[0]; i < b1[0]; i++) {
 				double cp[8][3], cv[8], cw[8];
+				int below = 0;
 				for (int c = 0; c < 8; c++) {
 					int idx[3] = {i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)};
 					cv[c] = at(&g, idx, cp[c], &cw[c]);
+					below += cv[c] < level;
 				}
+				if (below == 0 || below == 8)
+					continue;       /* no tetrahedron of the cell is cut */
 				for (int t = 0; t < 6; t++) {
 					double p[4][3], v[4], sw[4];
 					for (int q = 0; q < 4; q++) {

@@ -36,6 +36,16 @@ long iso_surface(const double *f, int nx, int ny, int nz, const double bounds[6]
 long iso_surface_speed(const double *f, const double *w, int nx, int ny, int nz,
 		       const double bounds[6], double level, int closed, iso_emit emit, void *ctx);
 
+/* The same over the cells c0[d] <= i < c1[d] only (cell i spans grid
+ * points i and i + 1; with closed, cells -1 and n - 1 are the pad's
+ * layers outside the faces), in the same order as the whole grid: the
+ * cells of a partition of the grid together give iso_surface_speed's
+ * triangles.  A cell whose eight values all lie on one side of level is
+ * skipped before its tetrahedra are split. */
+long iso_surface_window(const double *f, const double *w, int nx, int ny, int nz,
+			const double bounds[6], double level, int closed, const int c0[3],
+			const int c1[3], iso_emit emit, void *ctx);
+
 /* The fraction of the way from a to b at which f = level on an edge
  * whose ends have values fa, fb and speeds wa, wb, as iso_surface_speed
  * places it (linear in f where a speed is not positive). */

@@ -7,7 +7,9 @@
  * within the weld distance of, so two such points always meet), then each vertex keeps the list of its corners
  * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
  * corners to v and splices them into v's list, dead corners are skipped
- * where the lists are read.  Every vertex has at most one entry in a
+ * where the lists are read and unlinked where a vertex's neighbours are
+ * listed (a vertex opposite a collapsed edge would otherwise carry its
+ * dead corners to the end, two for each live one).  Every vertex has at most one entry in a
  * binary heap, updated in place: its cheapest collapse by the cost and
  * the box and boundary rules, keyed (cost, vertex); after a collapse
  * u -> v, v and its neighbours are re-evaluated (their triangles or
@@ -196,10 +198,13 @@ static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 {
 	m->stamp++;
 	size_t k = 0;
-	for (long c = m->head[x]; c >= 0; c = m->next[c]) {
-		long t = c / 3;
-		if (m->tv[3 * t] < 0)
+	for (long *pc = &m->head[x]; *pc >= 0;) {
+		long c = *pc, t = c / 3;
+		if (m->tv[3 * t] < 0) {
+			*pc = m->next[c];       /* a dead corner: unlinked for good */
 			continue;
+		}
+		pc = &m->next[c];
 		for (int s = 0; s < 3; s++) {
 			int w = m->tv[3 * t + s];
 			if (w == x)
@@ -262,40 +267,10 @@ static int valid_cheap(const struct dmesh *m, int u, int v, int ns, double *cost
 	return 1;
 }
 
-/* whether collapsing u onto v is allowed, its cost in *cost; without
- * full only the box, the boundary and the cost are checked (the heap's
- * order), with full the topology, orientation and shape too (the
- * input vertices and samples are points_ok's) */
-static int valid(struct dmesh *m, int u, int v, double *cost, int full)
+/* whether moving u onto v flips none of u's other triangles and makes
+ * none thinner than TRI_DECIMATE_QMIN that was not thinner already */
+static int shape_ok(const struct dmesh *m, int u, int v)
 {
-	int opp[2];
-	int ns = shared(m, u, v, opp);
-	double c;
-	if (!valid_cheap(m, u, v, ns, &c))
-		return 0;
-	*cost = c;
-	if (!full)
-		return 1;
-	/* link condition: the common neighbours are the opposite vertices */
-	size_t nu = ring_of(m, u, &m->ring, &m->cring);
-	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
-	m->stamp++;
-	for (size_t k = 0; k < nu; k++)
-		m->mark[m->ring[k]] = m->stamp;
-	int common = 0;
-	for (size_t k = 0; k < nvr; k++) {
-		int w = m->ring2[k];
-		if (m->mark[w] != m->stamp)
-			continue;
-		if (w != opp[0] && (ns < 2 || w != opp[1]))
-			return 0;
-		common++;
-	}
-	if (common != ns)
-		return 0;
-	if (ns == 2 && nu == 3 && nvr == 3)
-		return 0;       /* a tetrahedron would fold flat */
-	/* no flip, no new sliver */
 	const double *pv = m->p + 3 * (size_t)v;
 	for (long c2 = m->head[u]; c2 >= 0; c2 = m->next[c2]) {
 		long t = c2 / 3;
@@ -316,6 +291,46 @@ static int valid(struct dmesh *m, int u, int v, double *cost, int full)
 		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
 			return 0;
 	}
+	return 1;
+}
+
+/* whether collapsing u onto v is allowed, its cost in *cost; without
+ * full only the box, the boundary and the cost are checked (the heap's
+ * order), with full the topology, orientation and shape too (the
+ * input vertices and samples are points_ok's) */
+static int valid(struct dmesh *m, int u, int v, double *cost, int full)
+{
+	int opp[2];
+	int ns = shared(m, u, v, opp);
+	double c;
+	if (!valid_cheap(m, u, v, ns, &c))
+		return 0;
+	*cost = c;
+	if (!full)
+		return 1;
+	/* the shape first: it fails most often (on the thin triangles of
+	 * marching tetrahedra) and needs no ring */
+	if (!shape_ok(m, u, v))
+		return 0;
+	/* link condition: the common neighbours are the opposite vertices */
+	size_t nu = ring_of(m, u, &m->ring, &m->cring);
+	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
+	m->stamp++;
+	for (size_t k = 0; k < nu; k++)
+		m->mark[m->ring[k]] = m->stamp;
+	int common = 0;
+	for (size_t k = 0; k < nvr; k++) {
+		int w = m->ring2[k];
+		if (m->mark[w] != m->stamp)
+			continue;
+		if (w != opp[0] && (ns < 2 || w != opp[1]))
+			return 0;
+		common++;
+	}
+	if (common != ns)
+		return 0;
+	if (ns == 2 && nu == 3 && nvr == 3)
+		return 0;       /* a tetrahedron would fold flat */
 	return 1;
 }
 

@@ -1,0 +1,82 @@
+#!/bin/sh
+# tests/bench/fmm-speed.sh [BUILD] - the cost of etch -method fmm's
+# decimated output against the code before its tiled extraction and the
+# faster decimator, measured in the same run: the base revision
+# (FMM_BASE, default ed01cc5) is exported with git archive into a
+# temporary directory and built there, then the same commands run with
+# the old and the new etch.  Cases:
+#   - examples/defect's Shipley 1470 resist at 80 % dose (one set at 30 s,
+#     then the example's -et 30 -pt 10), and the ray-string on the same
+#     rate file for comparison;
+#   - a 281 x 281 x 31 window of examples/contact's baked resist with two
+#     clear lines (9 decimation tiles), -et 60 -pt 10, at 2 threads.
+# Figures: CPU (user + sys) and wall seconds and peak RSS (/usr/bin/time
+# -v's maximum resident set), one run each (the machine is shared: wall
+# times move with its load, CPU less so).  The old and new curves.plot
+# are compared byte for byte (the changes keep the output).  Asserts
+# nothing.
+set -u
+TOP=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=${1:-${BUILD:-build}}
+case $BUILD in /*) ;; *) BUILD=$TOP/$BUILD ;; esac
+BASE=${FMM_BASE:-ed01cc5}
+NEW=$BUILD/bin
+[ -x "$NEW/etch" ] || { echo "fmm-speed: $NEW/etch not built"; exit 1; }
+[ -x /usr/bin/time ] || { echo "fmm-speed: /usr/bin/time missing (Debian package time)"; exit 1; }
+if ! git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
+	echo "fmm-speed: base revision $BASE not in this repository; no comparison"
+	exit 0
+fi
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/fmmspeed.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT INT TERM
+mkdir -p "$tmp/base"
+git -C "$TOP" archive "$BASE" | tar -x -C "$tmp/base" || { echo "fmm-speed: git archive failed"; exit 1; }
+make -s -C "$tmp/base" -j2 BUILD=build all >"$tmp/base.log" 2>&1 ||
+	{ echo "fmm-speed: building $BASE failed"; tail -n 5 "$tmp/base.log"; exit 1; }
+OLD=$tmp/base/build/bin
+cd "$tmp" || exit 1
+echo "fmm-speed: old = $BASE, new = this tree"
+
+# run LABEL ETCH ARGS...: one etch run, its CPU, wall and peak RSS
+run() {
+	label=$1
+	shift
+	/usr/bin/time -v -o t.txt "$@" >/dev/null 2>err.txt || { echo "  $label: failed"; tail -n 3 err.txt; return 1; }
+	awk -v l="$label" -F': ' '
+		/User time/ { u = $2 } /System time/ { s = $2 } /Maximum resident/ { m = $2 }
+		/Elapsed \(wall/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = 60 * w + a[i] }
+		END { printf "  %-34s cpu %7.2f s  wall %7.2f s  peak %7.1f MB\n", l, u + s, w, m / 1024 }' t.txt
+}
+
+"$NEW/splat" -q -o defect.cont "$TOP/examples/defect/mask.in" || exit 1
+"$NEW/bleach" -q -o defect.bin defect.cont "$TOP/examples/defect/resist-shipley1470-80.in" || exit 1
+echo "examples/defect, resist-shipley1470-80:"
+run "ray-string -et 30 -pt 10" "$NEW/etch" -q -et 30 -pt 10 -o ray.plot defect.bin
+for a in "-last" "-pt 10"; do
+	# shellcheck disable=SC2086
+	run "fmm old -et 30 $a" "$OLD/etch" -q -method fmm -et 30 $a -o old.plot defect.bin
+	# shellcheck disable=SC2086
+	run "fmm new -et 30 $a" "$NEW/etch" -q -method fmm -et 30 $a -o new.plot defect.bin
+	cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
+done
+
+cat >window.in <<'X'
+wavelength 0.436
+na 0.28
+sigma 0.5
+background dark
+window -7 7 -7 7
+rect -0.4 -3 0.4 3 1 0
+rect 2 -3 3 3 1 0
+grid 281 281
+contour window.cont
+X
+sed 's/^grid nz .*/grid nz 30/' "$TOP/examples/contact/resist.in" >window-r.in
+"$NEW/splat" -q window.in || exit 1
+"$NEW/bleach" -q -o window.bin window.cont window-r.in || exit 1
+echo "contact resist, 281 x 281 x 31 window (9 tiles), 2 threads:"
+run "ray-string -et 60 -pt 10" "$NEW/etch" -q -threads 2 -et 60 -pt 10 -o ray.plot window.bin
+run "fmm old -et 60 -pt 10" "$OLD/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o old.plot window.bin
+run "fmm new -et 60 -pt 10" "$NEW/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o new.plot window.bin
+cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
+exit 0
