@@ -10,10 +10,11 @@
  * pairs whose pupils overlap (|f' - f''| < 2 NA/lambda, about
  * n pi (2 NA/lambda)^2 Lx Ly / 2 of them) are integrated over the source
  * discs with nouter x ninner quadrature points; the image costs
- * (4M+1)(4N+1) ny + (4M+1) nx ny products and the output about a
- * microsecond a number.  The per-operation times were measured on the
- * development machine (a 2020 x86-64 core): the estimate is meant to be
- * right within a factor of a few, which is all a limit of an hour needs.
+ * (4M+1)(4N+1) ny + (4M+1) nx ny products and the output about 0.06
+ * microseconds a number.  The per-operation times are seconds of one
+ * core, measured on the development machine (a 2020 x86-64 core) and
+ * checked by tests/bench/estimate.sh (make bench), which prints each
+ * estimate beside the time the run takes: within a factor of 2.
  *
  * The Abbe method (abbe.c) costs, per source cell and image plane, the
  * coefficients placed in the pupil (one test an order) and an FFT of the
@@ -37,8 +38,9 @@
 
 /* seconds per pair tried and rejected; per quadrature point of an
  * integrated pair; per complex product of the image sums; per number
- * written (measured, see above) */
-static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 1e-6;
+ * written (measured, see above; the contact's image on 1024^2 to 4096^2
+ * points costs 0.09 us a point with its output) */
+static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 6e-8;
 /* per row of a flat pupil's source integral (the row's sine and cosine
  * precomputed) */
 static const double T_ROW = 1.3e-8;
