@@ -10,7 +10,7 @@
 #     amplified bake of examples/car-krf-lines on 51^2 and 101^2 columns;
 #   etch: the ray-string engine on two rate grids and segment lengths,
 #     fast marching on two rate grids;
-#   measure: -force on 100 to 300 random triangles (the hole search);
+#   measure: -force on 100 and 300 random triangles (the hole search);
 #   contour -3D, conv -vtk, drawplot, pdraw (with and without -h): plot
 #     files of growing size.
 # Each runs on one core (SAMPLE3D_THREADS=1), since the estimate counts
@@ -103,13 +103,12 @@ run "etch ray 201^2x150 -et 60 -seg 0.02 -dt 0.1" "$B/etch" -et 60 -seg 0.02 -dt
 run "etch fmm 51^2 -et 60" "$B/etch" -et 60 -method fmm -o f51.plot r51.bin
 run "etch fmm 201^2x150 -et 60" "$B/etch" -et 60 -method fmm -o f201.plot r201.bin
 
-# measure -force on random triangles in the unit box
-for n in 100 200 300; do
-	awk -v n="$n" 'BEGIN { srand(n); print 0, 1, 0, 1, -1, 0; print n
-		for (t = 0; t < n; t++) { print 4
-			for (k = 0; k < 3; k++) { p[k] = sprintf("%.6f %.6f %.6f", rand(), rand(), -rand()); print p[k] }
-			print p[0] } }' >t$n.3D
-	run "measure -force hole, $n random triangles" "$B/measure" -force -rel 50 -hole 0.5 0.5 -o m.dat t$n.3D
+# measure -force on 100 and 300 random triangles in the unit box (the
+# hole search through a surface crossing itself everywhere, the fuzzers'
+# reproducers)
+for n in 100 300; do
+	run "measure -force hole, $n random triangles" "$B/measure" -force -rel 50 -hole 0.5 0.5 \
+		-o m.dat "$TOP/tests/fuzz/regress/plot3d-measure-force-$n-random.3D"
 done
 
 # the plot programs: grids as images, 3D surfaces and 2D curves
