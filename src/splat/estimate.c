@@ -34,7 +34,9 @@
 #include "util.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* seconds per pair tried and rejected; per quadrature point of an
  * integrated pair; per complex product of the image sums; per number
@@ -58,10 +60,46 @@ static const double T_FFT = 6e-10, T_ORDER = 3e-9, T_ACC = 1e-9;
 static const double T_POLY = 1.2e-8, T_COL = 1e-8, T_GROUP = 3e-9, T_SWEEP = 1e-8;
 static const double B_POLY = 90;
 
-static int cmp_x(const void *a, const void *b)
+/* The distinct values among finite doubles, counted in a hash set (open
+ * addressing, NaN marking an empty slot, the table doubled at half full):
+ * linear time, where sorting a million squares' edges took longer than
+ * the rest of the estimate and of the mask's reading together. */
+struct xset {
+	double *v;
+	size_t cap, n;
+};
+
+static size_t xset_slot(const struct xset *h, double x)
 {
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
+	uint64_t b;
+	memcpy(&b, &x, sizeof b);
+	/* splitmix64's finaliser */
+	b ^= b >> 30, b *= 0xbf58476d1ce4e5b9u;
+	b ^= b >> 27, b *= 0x94d049bb133111ebu;
+	b ^= b >> 31;
+	size_t i = (size_t)b & (h->cap - 1);
+	while (!isnan(h->v[i]) && h->v[i] != x)
+		i = (i + 1) & (h->cap - 1);
+	return i;
+}
+
+static void xset_add(struct xset *h, double x)
+{
+	x += 0.0;       /* -0 is 0 */
+	if (2 * (h->n + 1) > h->cap) {
+		struct xset g = {xreallocarray(NULL, h->cap ? 2 * h->cap : 1024, sizeof *g.v),
+				 h->cap ? 2 * h->cap : 1024, h->n};
+		for (size_t i = 0; i < g.cap; i++)
+			g.v[i] = NAN;
+		for (size_t i = 0; i < h->cap; i++)
+			if (!isnan(h->v[i]))
+				g.v[xset_slot(&g, h->v[i])] = h->v[i];
+		free(h->v);
+		*h = g;
+	}
+	size_t i = xset_slot(h, x);
+	if (isnan(h->v[i]))
+		h->v[i] = x, h->n++;
 }
 
 /* The seconds of the polygon mask for nrect orders in nrows rows, and its
@@ -77,8 +115,7 @@ static double mask_poly_cost(const struct splat_mask *m, double nrect, double nr
 	*verts = v > 0 ? v + 4.0 * m->nrects : 0;
 	if (v == 0)
 		return 0;
-	double *xs = xreallocarray(NULL, (size_t)v + 1, sizeof *xs);
-	size_t nx = 0;
+	struct xset xs = {0};
 	for (int k = 0; k < m->nlayers; k++) {
 		const struct poly_set *ps = &m->layers[k].shapes;
 		for (int i = 0; i < ps->n; i++) {
@@ -90,18 +127,15 @@ static double mask_poly_cost(const struct splat_mask *m, double nrect, double nr
 					continue;               /* horizontal: no piece */
 				if (xy[2 * j] == xy[2 * j1]) {
 					vert++;
-					xs[nx++] = xy[2 * j];
+					xset_add(&xs, xy[2 * j]);
 				} else {
 					slant++;
 				}
 			}
 		}
 	}
-	qsort(xs, nx, sizeof *xs, cmp_x);
-	double groups = 0;
-	for (size_t i = 0; i < nx; i++)
-		groups += i == 0 || xs[i] != xs[i - 1];
-	free(xs);
+	double groups = (double)xs.n;
+	free(xs.v);
 	/* the rects' vertical edges, 2 each, at their own x */
 	vert += 2.0 * m->nrects;
 	groups += 2.0 * m->nrects;
