@@ -8,7 +8,7 @@ R=$TOP/tests/fuzz/regress
 S=$TOP/tests/fuzz/corpus
 # 20 s each (the 258-byte AREF of a million squares 10 s: it is refused
 # within 0.3 s of one core), which leaves room for a machine loaded ten
-# times over (every case takes under 0.6 s of one core), and, outside the
+# times over (none takes more than about 0.6 s of one core), and, outside the
 # sanitizers (whose shadow memory needs terabytes of address space),
 # 1.5 GB of address space as a stand-in for the 1 GB a reader may use on
 # bad input
