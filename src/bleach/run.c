@@ -25,12 +25,15 @@
 #include <string.h>
 
 /* Seconds per rate point (exposure lookup, bake, development rate) and
- * per number written, measured on the development machine.  Memory: M
+ * per number written in the binary and the ASCII form, measured with one
+ * core on the contact example's image at 201^2 and 401^2 columns of 300
+ * points (tests/bench/estimate.sh: 0.065 us a point in all with the
+ * binary output, 0.16 us with -ascii).  Memory: M
  * is held (8 bytes a point), the rate is made plane by plane as it is
  * written; per column the dose, a stack's intensities, and one plane of
  * bake scratch per thread.  There is no fixed cap on the grid: the
  * estimate against the machine's memory (budget.h) is the limit. */
-static const double T_POINT = 3e-7, T_OUT = 1e-6;
+static const double T_POINT = 4.5e-8, T_OUT_BIN = 1e-8, T_OUT_ASCII = 5.5e-8;
 
 static int quiet;
 
@@ -270,7 +273,7 @@ static void read_inputs(struct run *u)
 	char what[64], where[FILENAME_MAX + 24];
 	snprintf(what, sizeof what, "%.3g rate points", npts);
 	snprintf(where, sizeof where, "%s:%ld", o->input, in->line_nz ? in->line_nz : 1L);
-	budget_check(where, what, npts * (T_POINT + 2 * T_OUT),
+	budget_check(where, what, npts * (T_POINT + 2 * (o->ascii ? T_OUT_ASCII : T_OUT_BIN)),
 		     8 * npts + 8 * ncold * (1 + (st->is_stack ? st->n : 0) + par_threads()) +
 		     8 * (double)nz * nz);
 	/* the rate file and mxyz.solid.3D are committed together (util.h) */

@@ -11,11 +11,16 @@
 #include <math.h>
 #include <stdio.h>
 
-/* Seconds per triangle and time step of the ray-string engine, and per
- * (refined) grid node of fast marching, measured on the development
- * machine; bytes per triangle (with its nodes and segments) and per
- * fast-marching node. */
-static const double T_TRI_STEP = 6e-7, T_FMM_NODE = 2e-6, B_TRI = 400, B_FMM_NODE = 48;
+/* Seconds of one core per triangle and time step of the ray-string
+ * engine, per rate point read and made into the rate field (the whole
+ * of a run of one step), and per (refined) grid node of fast marching,
+ * measured on the development machine with the contact's rate on 51^2 x
+ * 300 and 201^2 x 150 points (tests/bench/estimate.sh prints them beside
+ * the runs: 1.0e-7 to 1.5e-7 s a triangle and step, 6e-8 s a rate point,
+ * 1.4e-6 s a node); bytes per triangle (with its nodes and segments) and
+ * per fast-marching node. */
+static const double T_TRI_STEP = 1.2e-7, T_RATE = 7e-8, T_FMM_NODE = 1.5e-6;
+static const double B_TRI = 400, B_FMM_NODE = 48;
 
 /* The estimate of the run before it starts (budget.h): time steps times
  * the triangles of the start, or the refined grid of fast marching. */
@@ -40,7 +45,7 @@ void etch_estimate(const struct ratefile *r, const struct rfield *f,
 	double wx = f->hi[0] - f->lo[0], wy = f->hi[1] - f->lo[1], wz = f->hi[2] - f->lo[2];
 	double tris = o->seed ? 20.0 * o->seed : 2 * (wx / seg + 1) * (wy / (seg * sqrt(3) / 2) + 1);
 	double bound = ETCH_MESH_FACTOR * 2 * (wx * wy + wx * wz + wy * wz) / (sqrt(3) / 4 * seg * seg);
-	secs = steps * tris * T_TRI_STEP;
+	secs = steps * tris * T_TRI_STEP + (double)r->nx * r->ny * r->nz * T_RATE;
 	bytes = fmin(bound, 1e9) * B_TRI + sets * 16;
 	snprintf(what, sizeof what, "%.3g time steps of a mesh of %.3g triangles", steps, tris);
 	budget_check(o->input, what, secs, bytes);

@@ -615,8 +615,10 @@ static void check_triangle(const char *path, const struct plot_file *pf, int si,
 static struct plot_file *read_triangles(const char *input, double *zmin, double *zmax)
 {
 	/* the estimate (plot_budget), measured on a 401 x 401 grid as
-	 * triangles (3.8 M numbers, 47 MB): 84 MB, 0.33 s */
-	plot_budget(1, (char *const[]){(char *)input}, 24, 1e-7);
+	 * triangles (3.8 M numbers, 47 MB): 84 MB; one core's time on grids
+	 * of 501^2 and 1001^2 (8.8 M and 41 M numbers): 0.05 to 0.06 us a
+	 * number (tests/bench/estimate.sh) */
+	plot_budget(1, (char *const[]){(char *)input}, 24, 6e-8);
 	struct plot_file *pf = fmt_plot_read(input, 3);
 	long line = pf->first_line;     /* after any comment lines */
 	for (int si = 0; si < pf->nsets; si++) {

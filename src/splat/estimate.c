@@ -10,10 +10,11 @@
  * pairs whose pupils overlap (|f' - f''| < 2 NA/lambda, about
  * n pi (2 NA/lambda)^2 Lx Ly / 2 of them) are integrated over the source
  * discs with nouter x ninner quadrature points; the image costs
- * (4M+1)(4N+1) ny + (4M+1) nx ny products and the output about a
- * microsecond a number.  The per-operation times were measured on the
- * development machine (a 2020 x86-64 core): the estimate is meant to be
- * right within a factor of a few, which is all a limit of an hour needs.
+ * (4M+1)(4N+1) ny + (4M+1) nx ny products and the output about 0.06
+ * microseconds a number.  The per-operation times are seconds of one
+ * core, measured on the development machine (a 2020 x86-64 core) and
+ * checked by tests/bench/estimate.sh (make bench), which prints each
+ * estimate beside the time the run takes: within a factor of 2.
  *
  * The Abbe method (abbe.c) costs, per source cell and image plane, the
  * coefficients placed in the pupil (one test an order) and an FFT of the
@@ -33,12 +34,15 @@
 #include "util.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* seconds per pair tried and rejected; per quadrature point of an
  * integrated pair; per complex product of the image sums; per number
- * written (measured, see above) */
-static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 1e-6;
+ * written (measured, see above; the contact's image on 1024^2 to 4096^2
+ * points costs 0.09 us a point with its output) */
+static const double T_PAIR = 4e-8, T_QUAD = 4e-8, T_IMAGE = 3e-9, T_OUT = 6e-8;
 /* per row of a flat pupil's source integral (the row's sine and cosine
  * precomputed) */
 static const double T_ROW = 1.3e-8;
@@ -56,10 +60,46 @@ static const double T_FFT = 6e-10, T_ORDER = 3e-9, T_ACC = 1e-9;
 static const double T_POLY = 1.2e-8, T_COL = 1e-8, T_GROUP = 3e-9, T_SWEEP = 1e-8;
 static const double B_POLY = 90;
 
-static int cmp_x(const void *a, const void *b)
+/* The distinct values among finite doubles, counted in a hash set (open
+ * addressing, NaN marking an empty slot, the table doubled at half full):
+ * linear time, where sorting a million squares' edges took longer than
+ * the rest of the estimate and of the mask's reading together. */
+struct xset {
+	double *v;
+	size_t cap, n;
+};
+
+static size_t xset_slot(const struct xset *h, double x)
 {
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
+	uint64_t b;
+	memcpy(&b, &x, sizeof b);
+	/* splitmix64's finaliser */
+	b ^= b >> 30, b *= 0xbf58476d1ce4e5b9u;
+	b ^= b >> 27, b *= 0x94d049bb133111ebu;
+	b ^= b >> 31;
+	size_t i = (size_t)b & (h->cap - 1);
+	while (!isnan(h->v[i]) && h->v[i] != x)
+		i = (i + 1) & (h->cap - 1);
+	return i;
+}
+
+static void xset_add(struct xset *h, double x)
+{
+	x += 0.0;       /* -0 is 0 */
+	if (2 * (h->n + 1) > h->cap) {
+		struct xset g = {xreallocarray(NULL, h->cap ? 2 * h->cap : 1024, sizeof *g.v),
+				 h->cap ? 2 * h->cap : 1024, h->n};
+		for (size_t i = 0; i < g.cap; i++)
+			g.v[i] = NAN;
+		for (size_t i = 0; i < h->cap; i++)
+			if (!isnan(h->v[i]))
+				g.v[xset_slot(&g, h->v[i])] = h->v[i];
+		free(h->v);
+		*h = g;
+	}
+	size_t i = xset_slot(h, x);
+	if (isnan(h->v[i]))
+		h->v[i] = x, h->n++;
 }
 
 /* The seconds of the polygon mask for nrect orders in nrows rows, and its
@@ -75,8 +115,7 @@ static double mask_poly_cost(const struct splat_mask *m, double nrect, double nr
 	*verts = v > 0 ? v + 4.0 * m->nrects : 0;
 	if (v == 0)
 		return 0;
-	double *xs = xreallocarray(NULL, (size_t)v + 1, sizeof *xs);
-	size_t nx = 0;
+	struct xset xs = {0};
 	for (int k = 0; k < m->nlayers; k++) {
 		const struct poly_set *ps = &m->layers[k].shapes;
 		for (int i = 0; i < ps->n; i++) {
@@ -88,18 +127,15 @@ static double mask_poly_cost(const struct splat_mask *m, double nrect, double nr
 					continue;               /* horizontal: no piece */
 				if (xy[2 * j] == xy[2 * j1]) {
 					vert++;
-					xs[nx++] = xy[2 * j];
+					xset_add(&xs, xy[2 * j]);
 				} else {
 					slant++;
 				}
 			}
 		}
 	}
-	qsort(xs, nx, sizeof *xs, cmp_x);
-	double groups = 0;
-	for (size_t i = 0; i < nx; i++)
-		groups += i == 0 || xs[i] != xs[i - 1];
-	free(xs);
+	double groups = (double)xs.n;
+	free(xs.v);
 	/* the rects' vertical edges, 2 each, at their own x */
 	vert += 2.0 * m->nrects;
 	groups += 2.0 * m->nrects;

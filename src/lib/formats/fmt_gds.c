@@ -307,9 +307,12 @@ int gds_find_cell(const struct gds_lib *g, const char *name, size_t len)
 	while (lo <= hi) {
 		int mid = lo + (hi - lo) / 2;
 		const char *s = g->c[mid].name;
+		/* s may be shorter than len when name holds a NUL (strncmp
+		 * stops there): its length, read no further than its end */
+		size_t sl = strnlen(s, len + 1);
 		int c = strncmp(s, name, len);
-		if (c == 0 && s[len] != '\0')
-			c = 1;
+		if (c == 0 && sl != len)
+			c = sl > len ? 1 : -1;
 		if (c == 0)
 			return mid;
 		if (c < 0)
@@ -507,6 +510,10 @@ static void parse(struct gds_lib *g)
 		if (e->kind != R_SREF && e->kind != R_AREF)
 			continue;
 		e->ref = gds_find_cell(g, (const char *)g->buf + e->sname, e->snamelen);
+		if (e->ref < 0 && memchr(g->buf + e->sname, '\0', e->snamelen))
+			gds_die(g, e->off, "%s names a cell with a NUL byte inside its name "
+				"(after \"%.60s\"): no cell is named so", rname(e->kind),
+				(const char *)g->buf + e->sname);
 		if (e->ref < 0)
 			gds_die(g, e->off, "%s to a missing cell \"%.*s\"", rname(e->kind),
 				(int)(e->snamelen > 60 ? 60 : e->snamelen),

@@ -14,7 +14,10 @@
 #ifndef S3D_BUDGET_H
 #define S3D_BUDGET_H
 
-/* The work limit, seconds of this machine. */
+/* The work limit, seconds of one core of this machine: the programs'
+ * estimates count the seconds of one core (their constants are measured
+ * that way; make bench prints each beside a run, tests/bench/estimate.sh),
+ * so that with several threads a run ends sooner than its estimate. */
 #define BUDGET_SECONDS 3600.0
 
 /* -big given: budget_check only reports. */

@@ -153,6 +153,11 @@ static void remove_temps(void)
 			temps[i] = NULL;
 			free(t);
 		}
+	/* the deferred commits were of these temporaries: none is left to
+	 * commit (a die hook that returns to its caller, as the fuzz
+	 * harness does, must not have aout_finish rename freed names) */
+	npend = 0;
+	deferring = 0;
 	block(0, &saved);
 }
 

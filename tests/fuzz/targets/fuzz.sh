@@ -33,6 +33,8 @@ for d in "$top"/src/lib/*/; do FLAGS="$FLAGS -I${d%/}"; done
 
 command -v "$CLANG" >/dev/null 2>&1 || { echo "fuzz: $CLANG is not installed (apt-get install clang libclang-rt-14-dev)" >&2; exit 77; }
 mkdir -p "$dir/obj" "$dir/corpus" "$dir/findings" || exit 1
+# absolute, for the targets that run in a directory of their own
+dir=$(cd "$dir" && pwd) || exit 1
 
 # the library, minus the X11 preview, with coverage for the fuzzer
 objs=""

@@ -135,11 +135,16 @@ static const char surface[] =
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+	/* the fuzzer's own directory, where its corpus and findings are
+	 * named relative to: measure runs in the private one, and every
+	 * input comes back here (libFuzzer writes a new unit after it) */
+	static int home = -1;
 	if (!dir[0]) {
 		util_setprog("measure");
 		util_set_die_hook(on_die);
 		snprintf(dir, sizeof dir, "/tmp/s3dfuzz-measure-%ld", (long)getpid());
-		if (mkdir(dir, 0700) != 0 || chdir(dir) != 0)
+		home = open(".", O_RDONLY | O_DIRECTORY);
+		if (home < 0 || mkdir(dir, 0700) != 0 || chdir(dir) != 0)
 			abort();
 		atexit(remove_dir);
 		put("s.plot", surface, 0600);
@@ -147,9 +152,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		if (fd < 0 || dup2(fd, 1) < 0)
 			abort();
 		close(fd);
+	} else if (chdir(dir) != 0) {
+		abort();
 	}
-	if (size > 4096)
+	if (size > 4096) {
+		if (fchdir(home) != 0)
+			abort();
 		return 0;
+	}
 	static char buf[4097];
 	char *argv[MAX_WORDS + 3];
 	argv[0] = "measure";
@@ -162,6 +172,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	in_run = 0;
 	free_all();
 	clean("s.plot");
+	if (fchdir(home) != 0)
+		abort();
 	return 0;
 }
 
