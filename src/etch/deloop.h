@@ -49,10 +49,12 @@
  * of the mesh) each loop of open border left is triangulated
  * (deloop_close.c) unless its triangles would cross the surface; those
  * that would are closed regardless and the stages run again on the
- * crossings, in rounds, until no border is open.  The front that goes on
- * advancing keeps its seams open: closed in place, the closing's
- * triangles folded into later deloops and steps, and a merge doubled a
- * segment (car-arf-contact with -pt 10, found by -check).
+ * crossings, in rounds, until no border is open.  The set written at a
+ * print time is delooped on a copy (ray_run.c), and the front that goes
+ * on advancing keeps its loops; only -deloop n deloops it in place, and
+ * it then keeps its seams open: closed in place, the closing's triangles
+ * folded into later deloops and steps, and a merge doubled a segment
+ * (car-arf-contact with -pt 10, found by -check).
  */
 #ifndef ETCH_DELOOP_H
 #define ETCH_DELOOP_H

@@ -222,32 +222,42 @@ static void near_mark(struct near *nr, const struct deloop_snap *sn, struct box_
 	nr->ds = ds, nr->dt = dt, nr->nds = nds, nr->ndt = ndt;
 }
 
+/* Calls fn(ctx, lo, hi) on the box of every dirty segment, then of every
+ * dirty triangle (the boxes of nr->bc). */
+static void near_each_dirty(const struct near *nr,
+			    void (*fn)(void *ctx, const double *lo, const double *hi), void *ctx)
+{
+	const struct mesh *m = nr->m;
+	const struct box_cache *bc = nr->bc;
+	for (size_t s = 0; s < m->nseg; s++)
+		if (nr->ds[s])
+			fn(ctx, bc->sb[s], bc->sb[s] + 3);
+	for (size_t t = 0; t < m->ntri; t++)
+		if (nr->dt[t])
+			fn(ctx, bc->tb[t], bc->tb[t] + 3);
+}
+
+/* near_coarsen's count: the cells of grid g a box touches, summed */
+struct cell_count {
+	const struct grid *g;
+	double cells;
+};
+
+static void count_cells(void *ctx, const double *lo, const double *hi)
+{
+	struct cell_count *cc = ctx;
+	cc->cells += box_cells(cc->g, lo, hi);
+}
+
 /* Coarsens nr->g until the dirty boxes fit in GRID_ENTRIES_PER_TRI cells
  * each on average (coarser, every triangle's box still does). */
 static void near_coarsen(struct near *nr)
 {
-	const struct mesh *m = nr->m;
-	const struct box_cache *bc = nr->bc;
 	struct grid *g = &nr->g;
 	for (;;) {
-		double de = 0;
-		for (size_t t = 0; t < m->ntri; t++) {
-			if (!nr->dt[t])
-				continue;
-			double blo[3], bhi[3];
-			memcpy(blo, bc->tb[t], sizeof blo);
-			memcpy(bhi, bc->tb[t] + 3, sizeof bhi);
-			de += box_cells(g, blo, bhi);
-		}
-		for (size_t s = 0; s < m->nseg; s++) {
-			if (!nr->ds[s])
-				continue;
-			double blo[3], bhi[3];
-			memcpy(blo, bc->sb[s], sizeof blo);
-			memcpy(bhi, bc->sb[s] + 3, sizeof bhi);
-			de += box_cells(g, blo, bhi);
-		}
-		if (de <= GRID_ENTRIES_PER_TRI * (double)(nr->nds + nr->ndt) + 64)
+		struct cell_count cc = {g, 0};
+		near_each_dirty(nr, count_cells, &cc);
+		if (cc.cells <= GRID_ENTRIES_PER_TRI * (double)(nr->nds + nr->ndt) + 64)
 			break;
 		/* same origin, cells twice as large */
 		g->h *= 2;
@@ -256,14 +266,15 @@ static void near_coarsen(struct near *nr)
 	}
 }
 
-/* Adds the cells the box [blo, bhi] touches to nr's set, and the box to
- * the union's. */
-static void near_add_box(struct near *nr, const double *blo, const double *bhi)
+/* Adds the cells the box [lo, hi] touches to the set of the struct near
+ * ctx, and the box to the union's. */
+static void near_add_box(void *ctx, const double *lo, const double *hi)
 {
-	set_add_box(&nr->g, blo, bhi, &nr->key, &nr->mask, &nr->nkey);
+	struct near *nr = ctx;
+	set_add_box(&nr->g, lo, hi, &nr->key, &nr->mask, &nr->nkey);
 	for (int d = 0; d < 3; d++) {
-		nr->ulo[d] = fmin(nr->ulo[d], blo[d]);
-		nr->uhi[d] = fmax(nr->uhi[d], bhi[d]);
+		nr->ulo[d] = fmin(nr->ulo[d], lo[d]);
+		nr->uhi[d] = fmax(nr->uhi[d], hi[d]);
 	}
 }
 
@@ -271,28 +282,13 @@ static void near_add_box(struct near *nr, const double *blo, const double *bhi)
  * outside it meets no dirty one. */
 static void near_cells(struct near *nr)
 {
-	const struct mesh *m = nr->m;
-	const struct box_cache *bc = nr->bc;
 	nr->mask = 1023, nr->nkey = 0;
 	nr->key = xreallocarray(NULL, nr->mask + 1, sizeof *nr->key);
 	for (size_t q = 0; q <= nr->mask; q++)
 		nr->key[q] = -1;
 	for (int d = 0; d < 3; d++)
 		nr->ulo[d] = INFINITY, nr->uhi[d] = -INFINITY;
-	for (size_t s = 0; s < m->nseg; s++)
-		if (nr->ds[s]) {
-			double blo[3], bhi[3];
-			memcpy(blo, bc->sb[s], sizeof blo);
-			memcpy(bhi, bc->sb[s] + 3, sizeof bhi);
-			near_add_box(nr, blo, bhi);
-		}
-	for (size_t t = 0; t < m->ntri; t++)
-		if (nr->dt[t]) {
-			double blo[3], bhi[3];
-			memcpy(blo, bc->tb[t], sizeof blo);
-			memcpy(bhi, bc->tb[t] + 3, sizeof bhi);
-			near_add_box(nr, blo, bhi);
-		}
+	near_each_dirty(nr, near_add_box, nr);
 }
 
 /* Whether box [blo, bhi] lies outside the union of the dirty boxes. */

@@ -64,7 +64,7 @@ static const char usage[] =
 	"  -o curves.plot   3D output; the 2D projection goes to curves.plot.2D,\n"
 	"                   the cut to curves.cut\n"
 	"  -no2d            do not write the 2D projection (curves.plot.2D)\n"
-	"  -last            write only the final set (-pt still paces -deloop)\n"
+	"  -last            write only the final set (-pt still paces -deloop n)\n"
 	"  -vtk file.vtp    also write the surfaces as VTK XML PolyData (ParaView)\n"
 	"  -check           check the mesh's consistency after every step, and\n"
 	"                   deloop's near searches against a full search\n"
