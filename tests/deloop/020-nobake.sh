@@ -13,10 +13,11 @@
 #     were closed by triangles, deloop_close.c, 8.2 um were left, seams
 #     of the joined sheets pulled back 0.005 um, and measure refused the
 #     sections through them), and measure reads its hole without -force
-#     (no section passes through a gap); with -pt 20 (delooped at 20, 40
-#     and 60 s) at most 10 um are left open (measured 8.3 um, was 18.7:
-#     the seams of the earlier deloops stay open on the advancing front
-#     and are closed only where they are slits at 60 s), read with -force;
+#     (no section passes through a gap); with -pt 20 (each print time
+#     delooped on a copy of the mesh, the advancing mesh keeping its loops)
+#     none either (was 18.7 um, then 8.3 um while the advancing mesh was
+#     delooped in place and kept the earlier deloops' seams open), and
+#     measure reads it without -force;
 #   - the hole is kept: its CDs at 10, 50 and 90 % height within 2 % of
 #     the fast-marching surface's (measured fmm 0 0.6796 1.2009 um, ray 0
 #     0.6787 1.2030: the hole is not open at 10 % at 60 s in either
@@ -42,8 +43,8 @@ etch -et 60 -pt 20 -deloop -check -o check.plot nobake.bin 2>check.err ||
 grep -q "^etch: deloop: 3 passes removed [1-9][0-9]* loops" check.err ||
 	fail "-check: no loop removed: $(grep deloop: check.err)"
 same check.plot ray20.plot
-cds() { # the three CDs of the last set on one line (measure must succeed; $2: -force)
-	measure ${2:-} -rel 10,50,90 -hole 0 0 "$1" >cd.txt 2>cd.err || { cat cd.err >&2; return 1; }
+cds() { # the three CDs of the last set on one line (measure must succeed)
+	measure -rel 10,50,90 -hole 0 0 "$1" >cd.txt 2>cd.err || { cat cd.err >&2; return 1; }
 	awk '!/^#/ { printf "%s ", $2 } END { print "" }' cd.txt
 }
 zlow() { # the lowest vertex of the last set
@@ -54,10 +55,10 @@ for run in ray ray20; do
 	line=$(grep 'deloop:' $run.log) || fail "$run: no deloop summary"
 	echo "$run: $line"
 	echo "$line" | grep -q ' 0 crossings left' || fail "$run: crossings left"
-	lim=0 force=; [ $run = ray20 ] && lim=10 force=-force
+	lim=0
 	echo "$line" | awk -v lim=$lim '{ for (i = 1; i <= NF; i++) if ($i == "um") o = $(i - 1); exit !(o <= lim) }' ||
 		fail "$run: more than $lim um of border left open"
-	r=$(cds $run.plot $force) || fail "$run: measure refused the hole's sections"
+	r=$(cds $run.plot) || fail "$run: measure refused the hole's sections"
 	echo "$run: hole CDs at 10 50 90 %: fmm $f, ray-string $r"
 	echo "$f $r" | awk '{ for (i = 1; i <= 3; i++) { a = $i; b = $(i + 3)
 		if (a == 0 && b == 0) continue; if (!(a > 0)) exit 1; d = (a - b) / a; if (d < 0) d = -d
