@@ -28,7 +28,7 @@ usage() {
 usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
-                [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check]]]
+                [-cut x|y VALUE|mid] [-last] [-measure "ARGS" [-accuracy [P|check|off]]]
                 [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
   -cf FILE    the aerial image (contour-file), bypassing splat
@@ -55,6 +55,9 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
               and etch's resolution until every CD's estimated error is
               under P % (default 1); the table gains the column err (um)
   -accuracy check  the estimate at the inputs' own grids, no refinement
+              (the default with -measure, -if and -bf; a warning when
+              an err is over 1 %)
+  -accuracy off  no estimate: the CDs of the inputs' grids alone
   -h, --help  this text
 U
 	etchopts_usage
@@ -87,7 +90,8 @@ while [ $# -gt 0 ]; do
 	-cut) [ $# -ge 3 ] || bad "option -cut needs an axis and a value"
 		cutaxis=$2 cutval=$3; shift 3 ;;
 	-measure) need_val "$@"; measureopts=$2; shift 2 ;;
-	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
+	-accuracy) if [ "${2:-}" = off ]; then accuracy=off; shift 2
+		else accuracy_opt "$@"; shift "$etchopt_n"; fi ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -101,11 +105,18 @@ etchopts="$etchopts -cut $cutaxis $cutval"
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
 [ -z "$measureopts" ] || [ -n "$etchtime" ] || bad "-measure needs -et (it measures etch's result)"
-if [ -n "$accuracy" ]; then
+if [ -n "$accuracy" ] && [ "$accuracy" != off ]; then
 	[ -n "$measureopts" ] || bad "-accuracy needs -measure (it bounds the error of the CDs)"
 	[ -n "$splat_in" ] && [ -n "$bleach_in" ] ||
 		bad "-accuracy refines splat's and bleach's grids: give -if and -bf"
 fi
+# the CDs' discretisation error is estimated unless asked not to: at the
+# inputs' grids (check) whenever the grids can be coarsened, -if and -bf
+# (levels -2 and -1 cost about a seventh of the run)
+if [ -z "$accuracy" ] && [ -n "$measureopts" ] && [ -n "$splat_in" ] && [ -n "$bleach_in" ]; then
+	accuracy=check
+fi
+[ "$accuracy" != off ] || accuracy=""
 # the engine measure reads: fast marching unless an etch option says
 [ -z "$measureopts" ] || etch_engine_default
 if [ -n "$measureopts" ]; then
@@ -145,7 +156,7 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	set -- $1 "$2"
 	say "accuracy: splat -grid $1 $2, bleach -nz $3, etch$4"
-	splat $quiet -grid "$1" "$2" "$splat_in" || die "splat failed; stopping"
+	splat $quiet -grid "$1" "$2" -bf "$bleach_in" "$splat_in" || die "splat failed; stopping"
 	bleach $quiet $ascii $solid -nz "$3" -o "$rate" "$contour" "$bleach_in" ||
 		die "bleach failed; stopping"
 	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
@@ -165,6 +176,14 @@ if [ -n "$accuracy" ]; then
 	cat "$acc_table"
 	if [ $st -eq 3 ]; then
 		die "-accuracy $accuracy: not reached at grid $acc_grid (the err column above); stopping"
+	fi
+	# check: say when the inputs' grids hold the CDs to less than the
+	# default 1 %, or the levels are not in the asymptotic range
+	if [ "$accuracy" = check ]; then
+		if ! awk '!/^#/ && $NF > 0.01 * $2 { exit 1 }' "$acc_table" ||
+			grep -q 'asymptotic' "$acc_log"; then
+			echo "$prog: warning: at the inputs' grids a CD's estimated discretisation error is over 1 % (the err column): -accuracy 1 refines the grid" >&2
+		fi
 	fi
 	say "accuracy: grid $acc_grid (nx ny nz), the tables of every level in accuracy/"
 fi
