@@ -159,8 +159,21 @@ accuracy_loop() {
 		# shellcheck disable=SC2086 # the grid is three words on purpose
 		set -- $acc_grid
 		acc_table=$acc_dir/$1x$2x$3.dat acc_log=$acc_dir/$1x$2x$3.log
-		acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||
-			return 1
+		if [ "$acc_k" -eq -2 ]; then
+			# level -2 may be too coarse for a stage (bleach refuses
+			# points further apart than half the standing-wave period):
+			# then the levels start at -1
+			acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" \
+				2>"$acc_log" || {
+				[ -n "${quiet:-}" ] || echo "${prog}: accuracy: level -2 ($acc_grid) not solved" \
+					"($(tail -n 1 "$acc_log")): the levels start at -1" >&2
+				acc_k=-1
+				continue
+			}
+		else
+			acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||
+				return 1
+		fi
 		# what is measured: P only where the level may stop the loop
 		# (from 0 on, with two levels before it), else check
 		acc_a=check

@@ -320,7 +320,7 @@ etch_engine_default
 
 # -accuracy: the grids of the inputs (the library's readers, through
 # femwin); P is chosen below at the nominal point, check keeps them
-grid="" cgrid="" ratio="" rgrid=""
+grid="" cgrid="" ratio="" rgrid="" order=1
 if [ -n "$accuracy" ]; then
 	[ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
 		bad "-accuracy $accuracy runs the nominal point to choose the grid: not with -n or -slurm (give -accuracy check)"
@@ -364,6 +364,16 @@ fem_accuracy_choose() {
 		*) die "-accuracy: the nominal point failed (focus $nomf dose $nomd)" ;;
 		esac
 		grid=$acc_grid cgrid=$acc_prevg
+		# the order the nominal point converged at (its last table's err
+		# is |change| / (r^p - 1), p observed from three levels): the
+		# lowest over its cds, which the points' two-solve estimates
+		# assume
+		# shellcheck disable=SC2086 # the grid is three words on purpose
+		order=$(awk -v r="$(acc_ratio "$cgrid" "$grid")" 'NR == FNR { if (!/^#/) c[FNR] = $2; next }
+			!/^#/ && $NF > 0 { d = $2 - c[FNR]; if (d < 0) d = -d; if (d == 0) next
+				p = log(1 + d / $NF) / log(r); if (m == "" || p < m) m = p }
+			END { if (m == "") m = 1; if (m < 0.5) m = 0.5; if (m > 2) m = 2; printf "%.3g\n", m }' \
+			"$dir/accuracy/$(echo $cgrid | tr ' ' x).dat" "$acc_table")
 		rm -f "$dir/accuracy/rate" "$dir/accuracy/curves.plot" "$dir/accuracy/image.cont"
 		say "accuracy: grid $grid (nx ny nz) at the nominal point, within $accuracy %"
 	fi
@@ -405,7 +415,7 @@ fem_accuracy_choose
 etchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$etchopts")"
 cetchq=""
 [ -z "$accuracy" ] || cetchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$cetchopts")"
-echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio}" | put accuracy.opts
+echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio $order}" | put accuracy.opts
 printf '%s\n' "$etchq${accuracy:+ / $cetchq}" | put etch.opts
 # the runs of a point are its directory fF/dD, or with -seeds one
 # directory fF/dD/sK per seed: seedsfx lists the suffixes (no fork per
@@ -457,7 +467,7 @@ S
 		echo "CSPLATGRID = -grid $4 $5"
 		echo "CBLEACHNZ = -nz $6"
 		printf 'CETCHOPTS = %s\n' "$cetchq"
-		echo "ACCURACY = -accuracy $accuracy -ratio $ratio"
+		echo "ACCURACY = -accuracy $accuracy -ratio $ratio -order $order"
 	fi
 	echo "TARGET = $target"
 	echo "TOL = $tol"

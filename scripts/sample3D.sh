@@ -156,12 +156,13 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	set -- $1 "$2"
 	say "accuracy: splat -grid $1 $2, bleach -nz $3, etch$4"
-	splat $quiet -grid "$1" "$2" -bf "$bleach_in" "$splat_in" || die "splat failed; stopping"
+	splat $quiet -grid "$1" "$2" -bf "$bleach_in" "$splat_in" ||
+		{ echo "$prog: splat failed" >&2; return 1; }
 	bleach $quiet $ascii $solid -nz "$3" -o "$rate" "$contour" "$bleach_in" ||
-		die "bleach failed; stopping"
+		{ echo "$prog: bleach failed" >&2; return 1; }
 	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
 	etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $4 "$rate" ||
-		die "etch failed; stopping"
+		{ echo "$prog: etch failed" >&2; return 1; }
 	acc_surface=curves.plot
 }
 if [ -n "$accuracy" ]; then

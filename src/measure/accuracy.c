@@ -20,11 +20,15 @@
  *     about the limit, which then lies within |e2| of cd(h): err = |e2|;
  *   - otherwise (growing, or shrinking slower than ORDER_MIN) the levels
  *     are not in the asymptotic range: the row is refused whatever P
- *     (counted as over), with err the estimate at ORDER_MIN, a lower
- *     bound of the real error, and a note on standard error.
+ *     (counted as over), with err the estimate at ORDER_MIN (not a
+ *     bound: the real error may be larger) and a note on standard error.
  * Changes both under NOISE_REL of the cd are below anything -accuracy
  * can ask and count as converged (err the two-solve estimate).
- * With two tables the order cannot be observed: p = ORDER_ASSUMED.
+ * With two tables the order cannot be observed: p is -order's, by default
+ * 1, the lowest in the chain (first-order upwind differences of fast
+ * marching; the image and the rates are interpolated linearly, second
+ * order), which of the orders 1 and 2 gives the larger estimate; fem
+ * passes the order its nominal point showed over three solves.
  */
 #include "measure.h"
 #include "fmt_measure.h"
@@ -33,16 +37,8 @@
 #include <math.h>
 #include <stdio.h>
 
-/* The order assumed from two solves: 1, the lowest in the chain
- * (first-order upwind differences of fast marching; the image and the
- * rates are interpolated linearly, second order), which of the orders 1
- * and 2 gives the larger estimate. */
-static const double ORDER_ASSUMED = 1;
-/* The observed orders trusted: below 0.5 a halving shrinks the change by
- * less than 1.41 and the estimate would be more than 2.4 times the
- * change, with the order itself uncertain; above 2, the highest order in
- * the chain (see above). */
-static const double ORDER_MIN = 0.5, ORDER_MAX = 2;
+/* The observed orders trusted (measure.h). */
+static const double ORDER_MIN = ACCURACY_ORDER_MIN, ORDER_MAX = ACCURACY_ORDER_MAX;
 /* Changes under 1e-4 of the cd (0.01 %, a twentieth of the 0.2 % of the
  * references, docs/accuracy.md) are noise for every -accuracy asked. */
 static const double NOISE_REL = 1e-4;
@@ -108,8 +104,8 @@ static int three_levels(double cd0, double cd1, double cd2, double r, double q,
 {
 	double e2 = cd0 - cd1, e1 = cd1 - cd2;
 	double a2 = fabs(e2), a1 = fabs(e1);
-	*p = ORDER_ASSUMED;
-	*err = a2 / (pow(r, ORDER_ASSUMED) - 1);
+	*p = 1;
+	*err = a2 / (r - 1);
 	if (fmax(a1, a2) <= NOISE_REL * fabs(cd0))
 		return 1;
 	if (a2 == 0) {
@@ -166,7 +162,7 @@ int accuracy_estimate(const struct options *o, struct result *r)
 			if (!trusted)
 				untrusted(o, w, c.rows[i].cd - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
 		} else {
-			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, ORDER_ASSUMED) - 1);
+			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);
 		}
 		if (o->accuracy > 0 && (!trusted || w->err > o->accuracy / 100 * w->cd))
 			over++;

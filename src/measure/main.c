@@ -21,7 +21,7 @@ static const char usage[] =
 	"               (-hole X Y | -space X Y x|y | -line X Y x|y | -holes)\n"
 	"               [-ler [-psd file]] [-lcdu] [-o file] [-plot file] [-force]\n"
 	"               [-accuracy P|check -coarse table [-ratio r]\n"
-	"                [-coarser table [-ratio2 q]]] surface.plot\n"
+	"                [-coarser table [-ratio2 q]] [-order p]] surface.plot\n"
 	"  -s set          the set (print time) to measure, from 1 in file order\n"
 	"                  (default: the last)\n"
 	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
@@ -56,6 +56,8 @@ static const char usage[] =
 	"  -coarser table  the table of a solve coarser still: the order is\n"
 	"                  observed from the three\n"
 	"  -ratio2 q       its grid spacing over -coarse's (default 2)\n"
+	"  -order p        without -coarser, the order assumed (0.5 to 2,\n"
+	"                  default 1)\n"
 	"  -h, --help      this text\n";
 
 /* A comma-separated list of finite numbers. */
@@ -185,6 +187,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 	const char **slots[] = {&o->input};
 	o->ratio = 2;
 	o->ratio2 = 2;
+	o->order = 1;
 	while (a.i < argc) {
 		args_help_exit(&a, 1);
 		if (a.i >= argc)
@@ -196,6 +199,7 @@ static void parse_options(int argc, char **argv, struct options *o)
 		    args_num(&a, "-ratio", RATIO_MIN, RATIO_MAX, &o->ratio) ||
 		    args_str(&a, "-coarser", &o->coarser) ||
 		    args_num(&a, "-ratio2", RATIO_MIN, RATIO_MAX, &o->ratio2) ||
+		    args_num(&a, "-order", ACCURACY_ORDER_MIN, ACCURACY_ORDER_MAX, &o->order) ||
 		    parse_feature(&a, o))
 			continue;
 		if (args_flag(&a, "-force")) {

@@ -36,6 +36,7 @@ struct options {
 	/* -coarser TABLE [-ratio2 Q]: a third solve, the order observed */
 	const char *coarser;    /* the table of the solve coarser than -coarse */
 	double ratio2;          /* coarser / coarse grid spacing (default 2) */
+	double order;           /* -order: assumed from two solves (default 1) */
 	const char *input;
 };
 
@@ -76,6 +77,14 @@ void measure_feature(const struct surf *s, const struct options *o,
 
 /* z raised off the substrate as the table's sections are (feature.c). */
 double feature_height(const struct surf *s, double z);
+/* The orders of convergence the estimate trusts: below 0.5 a halving
+ * shrinks the change by less than 1.41 and the estimate would be more
+ * than 2.4 times the change, with the order itself uncertain; above 2,
+ * the highest order in the chain (the image and the rates are
+ * interpolated linearly), an observed order is a lucky cancellation. */
+#define ACCURACY_ORDER_MIN 0.5
+#define ACCURACY_ORDER_MAX 2
+
 /* accuracy.c: the Richardson estimate of each row's discretisation
  * error from the coarse table (and the coarser one: the order observed);
  * returns the number of rows whose estimate is over o->accuracy percent

@@ -17,6 +17,7 @@
 #     order 0.5, |e2| / (sqrt 2 - 1); -accuracy check writes the same
 #     table with status 0 and the note;
 #   - three equal solves: err 0, trusted;
+#   - two solves with -order 2 (radii 0.31, 0.34): err = |e2| / 3 = 0.02;
 #   - -coarser without -accuracy, or -ratio2 out of range: usage errors.
 . "$TOP/tests/lib/common.sh"
 synth() { awk -f "$TOP/tests/measure/synth.awk" -v kind=rev -v prof="$1 -0.7 $1 0 3 0" -v seed="$2"; }
@@ -92,7 +93,12 @@ est 1
 [ $st -eq 0 ] || fail "three equal solves: status $st: $(cat err.txt)"
 awk '!/^#/ && $6 != 0 { exit 1 }' e.tab || fail "three equal solves: err not 0: $(cat e.tab)"
 
-for args in "-coarser cc.tab" "-accuracy 1 -coarse c.tab -coarser cc.tab -ratio2 1" \
+tables 0.31 0.34 0.46
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -accuracy 5 -coarse c.tab -order 2 -o e.tab fine.plot || fail "-order 2: status $?"
+errs e.tab 0.02 "two solves, -order 2"
+
+for args in "-coarser cc.tab" "-accuracy 1 -coarse c.tab -order 0.4" "-accuracy 1 -coarse c.tab -order 3" "-accuracy 1 -coarse c.tab -coarser cc.tab -ratio2 1" \
 	"-accuracy 1 -coarse c.tab -coarser cc.tab -ratio2 x"; do
 	st=0
 	# shellcheck disable=SC2086 # the words on purpose
