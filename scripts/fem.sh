@@ -23,7 +23,8 @@ usage() {
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
            (or -points F:D,F:D,... instead of -dose and -focus)
-           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-d DIR] [-j N] [-keep] [-n] [-big]
+           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-grid "NX NY NZ"]
+           [-d DIR] [-j N] [-keep] [-n] [-big]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
   -if FILE      splat input file (the mask and the optics)
@@ -46,6 +47,9 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
                 column err (um); a point over P fails
   -accuracy check  every point at the inputs' grids and one level coarser:
                 the err column, no refinement
+  -grid "NX NY NZ"  every point at this image grid and nz (etch's
+                resolution scaled with it) instead of the inputs' (not
+                with -accuracy P, which chooses it)
   -d DIR        the sweep's directory (default fem)
   -j N          points run at once (make -j N; default: the cores)
   -keep         keep every point's rate file and curves.plot
@@ -70,7 +74,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
 dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet="" big=""
-etchopts="" points="" seeds="" accuracy=""
+etchopts="" points="" seeds="" accuracy="" fixgrid=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help|-h) usage; exit 0 ;;
@@ -95,6 +99,7 @@ while [ $# -gt 0 ]; do
 	-collect) collect=yes; shift ;;
 	-q) quiet=-q; shift ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
+	-grid) need_val "$@"; fixgrid=$2; shift 2 ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -144,7 +149,7 @@ DRAWPLOT=$(findprog drawplot)
 
 # -collect: everything else is in DIR/Makefile
 if [ -n "$collect" ]; then
-	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds$accuracy" ] ||
+	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds$accuracy$fixgrid" ] ||
 		bad "-collect takes only -d, -target, -tol and -q: the sweep is in DIR/Makefile"
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
@@ -321,12 +326,21 @@ etch_engine_default
 # -accuracy: the grids of the inputs (the library's readers, through
 # femwin); P is chosen below at the nominal point, check keeps them
 grid="" cgrid="" ratio="" rgrid="" order=1
-if [ -n "$accuracy" ]; then
-	[ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
+if [ -n "$fixgrid" ]; then
+	printf '%s\n' "$fixgrid" | grep -Eq '^ *[1-9][0-9]* +[1-9][0-9]* +[1-9][0-9]* *$' &&
+		awk -v g="$fixgrid" 'BEGIN { split(g, n, " "); exit !(n[1] >= 2 && n[2] >= 2 && n[3] >= 2 && n[1] * n[2] * n[3] <= 1e10) }' ||
+		badv "-grid \"$fixgrid\": expected three whole numbers NX NY NZ, each at least 2"
+	[ -z "$accuracy" ] || [ "$accuracy" = check ] ||
+		bad "-grid with -accuracy $accuracy: -accuracy P chooses the grid (-accuracy check estimates at -grid's)"
+fi
+if [ -n "$accuracy$fixgrid" ]; then
+	[ -z "$accuracy" ] || [ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
 		bad "-accuracy $accuracy runs the nominal point to choose the grid: not with -n or -slurm (give -accuracy check)"
 	grid=$("$FEMWIN" -resolution "$mask" "$resist" 2>"$chk/err") ||
 		die "$(sed -n '1{s/^femwin: //;p;}' "$chk/err")"
 	rgrid=$grid
+	# shellcheck disable=SC2086 # three words on purpose
+	[ -z "$fixgrid" ] || grid=$(echo $fixgrid)
 fi
 
 # fem_accuracy_choose: sets grid (the points' counts "nx ny nz"), cgrid
@@ -348,7 +362,11 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
 	acc_surface=$dir/accuracy/curves.plot
 }
 fem_accuracy_choose() {
-	[ -n "$accuracy" ] || return 0
+	if [ -z "$accuracy" ]; then
+		# -grid alone: etch's options scaled with the grid
+		[ -z "$fixgrid" ] || etchopts=$(acc_etchopts "$(acc_ratio "$grid" "$rgrid")")
+		return 0
+	fi
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	if [ "$accuracy" = check ]; then
 		cgrid=$(acc_grid $grid -1)
@@ -415,7 +433,7 @@ fem_accuracy_choose
 etchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$etchopts")"
 cetchq=""
 [ -z "$accuracy" ] || cetchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$cetchopts")"
-echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio $order}" | put accuracy.opts
+echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio $order}${fixgrid:+ -grid $grid}" | put accuracy.opts
 printf '%s\n' "$etchq${accuracy:+ / $cetchq}" | put etch.opts
 # the runs of a point are its directory fF/dD, or with -seeds one
 # directory fF/dD/sK per seed: seedsfx lists the suffixes (no fork per
@@ -468,6 +486,11 @@ S
 		echo "CBLEACHNZ = -nz $6"
 		printf 'CETCHOPTS = %s\n' "$cetchq"
 		echo "ACCURACY = -accuracy $accuracy -ratio $ratio -order $order"
+	elif [ -n "$fixgrid" ]; then
+		# shellcheck disable=SC2086 # three words on purpose
+		set -- $grid
+		echo "SPLATGRID = -grid $1 $2"
+		echo "BLEACHNZ = -nz $3"
 	fi
 	echo "TARGET = $target"
 	echo "TOL = $tol"
