@@ -73,9 +73,10 @@ etch_engine_default() {
 # asymptotic range) and writes the err column.  P: refine until every
 # err of a level from 0 on is under P % of its cd and trusted (at most
 # ACC_MAX_LEVEL); check: levels -2 to 0 only, the estimate of the inputs'
-# own grid.  A grid too coarse for level -2 starts at -1 (three levels
-# then need level 1 for P; check gets the two-level estimate, order 1
-# assumed).
+# own grid.  A grid too coarse for level -2, or a level -2 a stage
+# refuses, starts at -1 (three levels then need level 1 for P; check gets
+# the two-level estimate, order 1 assumed); a level below 0 that measure
+# refuses is left out of the estimate (check may then print no err).
 ACC_MAX_LEVEL=3
 
 # accuracy_opt ARGS...: when $1 is -accuracy, sets $accuracy to its
@@ -194,7 +195,16 @@ accuracy_loop() {
 		fi
 		case $acc_st in
 		0|3) ;;
-		*) cat "$acc_log" >&2; return 1 ;;
+		*)
+			[ "$acc_k" -lt 0 ] || { cat "$acc_log" >&2; return 1; }
+			# a coarse level measure refuses (a surface through a gap,
+			# a feature that does not form yet) gives no estimate: the
+			# levels above start without it
+			[ -n "${quiet:-}" ] || echo "${prog}: accuracy: level $acc_k ($acc_grid) not measured" \
+				"($(tail -n 1 "$acc_log")): no estimate from it" >&2
+			acc_prev="" acc_prevg="" acc_pprev="" acc_pprevg=""
+			acc_k=$((acc_k + 1))
+			continue ;;
 		esac
 		if [ "$acc_k" -ge 0 ]; then
 			if [ "$acc_p" = check ]; then

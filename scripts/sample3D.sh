@@ -180,7 +180,9 @@ if [ -n "$accuracy" ]; then
 	fi
 	# check: say when the inputs' grids hold the CDs to less than the
 	# default 1 %, or the levels are not in the asymptotic range
-	if [ "$accuracy" = check ]; then
+	if [ "$accuracy" = check ] && ! head -n 1 "$acc_table" | grep -q ' err$'; then
+		echo "$prog: warning: no estimate of the CDs' discretisation error: the coarser levels could not be measured (accuracy/*.log)" >&2
+	elif [ "$accuracy" = check ]; then
 		if ! awk '!/^#/ && $NF > 0.01 * $2 { exit 1 }' "$acc_table" ||
 			grep -q 'asymptotic' "$acc_log"; then
 			echo "$prog: warning: at the inputs' grids a CD's estimated discretisation error is over 1 % (the err column): -accuracy 1 refines the grid" >&2
