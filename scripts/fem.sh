@@ -382,10 +382,10 @@ fem_accuracy_choose() {
 		*) die "-accuracy: the nominal point failed (focus $nomf dose $nomd)" ;;
 		esac
 		grid=$acc_grid cgrid=$acc_prevg
-		# the order the nominal point converged at (its last table's err
-		# is |change| / (r^p - 1), p observed from three levels): the
-		# lowest over its cds, which the points' two-solve estimates
-		# assume
+		# the order the nominal point converged at, read back from its
+		# last table's err as if err = |change| / (r^p - 1) (measure's
+		# safety factor and fallbacks only lower it): the lowest over
+		# its cds, which the points' two-solve estimates assume
 		# shellcheck disable=SC2086 # the grid is three words on purpose
 		order=$(awk -v r="$(acc_ratio "$cgrid" "$grid")" 'NR == FNR { if (!/^#/) c[FNR] = $2; next }
 			!/^#/ && $NF > 0 { d = $2 - c[FNR]; if (d < 0) d = -d; if (d == 0) next

@@ -81,7 +81,8 @@ double feature_height(const struct surf *s, double z);
  * shrinks the change by less than 1.41 and the estimate would be more
  * than 2.4 times the change, with the order itself uncertain; above 2,
  * the highest order in the chain (the image and the rates are
- * interpolated linearly), an observed order is a lucky cancellation. */
+ * interpolated linearly), the coarser change is not yet asymptotic and
+ * order 1 is used (accuracy.c). */
 #define ACCURACY_ORDER_MIN 0.5
 #define ACCURACY_ORDER_MAX 2
 
