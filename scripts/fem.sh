@@ -686,6 +686,9 @@ interrupted() {
 trap interrupted INT TERM HUP
 
 say "$dir: $npts points ($nf foci x $nd doses), make -j $jobs"
+# the CDs' discretisation error is not estimated unless asked: say so
+[ -n "$accuracy" ] ||
+	say "the CDs' discretisation error is not estimated: -accuracy check estimates it (one coarser solve a point), -accuracy 1 bounds it"
 [ -n "$quiet" ] || { progress_loop & progress_pid=$!; }
 st=0
 make -k -s -C "$dir" --no-print-directory -j "$jobs" all || st=$?
