@@ -22,7 +22,8 @@ usage() {
 	cat <<'U'
 usage: calib -if mask.in -bf resist.in -et T -data measured.dat -measure "ARGS"
              -free "STATEMENT K LO:HI" [-free ...] [etch options]
-             [-validate other.dat] [-d DIR] [-j N] [-slurm [-sbatch "OPTS"]] [-q]
+             [-validate other.dat] [-accuracy [P|check]] [-d DIR] [-j N]
+             [-slurm [-sbatch "OPTS"]] [-q]
   -if FILE      splat input file (the mask and the optics)
   -bf FILE      bleach input file (the resist) holding the starting values
   -et T         development time (s)
@@ -32,6 +33,13 @@ usage: calib -if mask.in -bf resist.in -et T -data measured.dat -measure "ARGS"
   -free SPEC    "STATEMENT K LO:HI": fit the K-th number on the resist
                 file's STATEMENT line within [LO, HI]; repeat per parameter
   -validate F   measured CDs not used in the fit: their rms with the result
+  -accuracy [P] choose the image grid, nz and etch's resolution before the
+                fit (fem -accuracy P at the middle measured point, the
+                starting values) so that the CDs are within P % (default
+                1), fit at that grid, and estimate the fitted CDs' error
+                (fem -accuracy check on the result)
+  -accuracy check  fit at the inputs' grids and estimate the fitted CDs'
+                error there
   -d DIR        the fit's directory (default calib)
   -j N          simulations run at once (make -j N; default: the cores)
   -slurm        run each batch of simulations as Slurm job arrays (fem
@@ -60,7 +68,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 LAMBDA0=0.001 MAXITER=30 MAXREJECT=4 SSRTOL=0.001
 
 mask="" resist="" etchtime="" data="" margs="" validate="" dir=calib jobs=""
-slurm="" sbopts="" quiet="" etchopts="" method="" etchx=""
+slurm="" sbopts="" quiet="" etchopts="" method="" etchx="" accuracy=""
 nfree=0
 frees=""
 while [ $# -gt 0 ]; do
@@ -73,6 +81,17 @@ while [ $# -gt 0 ]; do
 	-measure) need_val "$@"; margs=$2; shift 2 ;;
 	-free) need_val "$@"; nfree=$((nfree + 1)); eval "free_$nfree=\$2"; shift 2 ;;
 	-validate) need_val "$@"; validate=$2; shift 2 ;;
+	-accuracy)
+		# a percentage between 0 and 100 or check (etchopts.sh's
+		# accuracy_value, as sample3D and fem take it); bare: 1 %
+		case ${2:-} in
+		[0-9.]*|check)
+			{ [ "$2" = check ] || { printf '%s\n' "$2" | grep -Eq '^([0-9]+\.?[0-9]*|\.[0-9]+)$' &&
+				awk -v v="$2" 'BEGIN { exit !(v > 0 && v < 100) }'; }; } ||
+				bad "-accuracy $2: expected a percentage between 0 and 100, or check"
+			accuracy=$2; shift 2 ;;
+		*) accuracy=1; shift ;;
+		esac ;;
 	-d) need_val "$@"; dir=$2; shift 2 ;;
 	-j) need_val "$@"; jobs=$2; shift 2 ;;
 	-slurm) slurm=yes; shift ;;
@@ -125,6 +144,8 @@ CALIBFIT=$(findprog calibfit)
 FEM=$(findprog fem)
 DRAWPLOT=$(findprog drawplot)
 [ -z "$slurm" ] || command -v sbatch >/dev/null 2>&1 || die "-slurm: cannot find sbatch"
+[ -z "$accuracy" ] || [ "$accuracy" = check ] || [ -z "$slurm" ] ||
+	bad "-accuracy $accuracy runs a point to choose the grid: not with -slurm (give -accuracy check)"
 
 # calibfit with the resist file and the -free specs
 fit() {
@@ -158,13 +179,30 @@ femrun() { # femrun RESIST POINTS DIR [fem options]
 	r=$1 p=$2 d=$3
 	shift 3
 	[ -z "$etchx" ] || set -- -etch "$etchx" "$@"
+	[ -z "$grid" ] || set -- -grid "$grid" "$@"
 	# shellcheck disable=SC2086 # etchopts is a list of words on purpose
 	"$FEM" -q -if "$dir/mask.in" -bf "$r" -et "$etchtime" $etchopts \
 		-measure "$margs" -points "$p" -d "$d" "$@"
 }
-setup="$(cksum <"$mask") $etchtime $etchopts -etch $etchx -measure $margs -points $points"
 cp "$mask" "$dir/mask.in.new"
 if cmp -s "$dir/mask.in.new" "$dir/mask.in"; then rm -f "$dir/mask.in.new"; else mv -f "$dir/mask.in.new" "$dir/mask.in"; fi
+
+# -accuracy P: the grid, chosen once before the fit by fem -accuracy P at
+# the middle measured point with the starting values (fem(1): refined
+# until that point's every cd is within P %, the order of convergence
+# observed), so that every trial of the fit runs at the same grid (a grid
+# changing between trials would put its error into the Jacobian)
+grid=""
+if [ -n "$accuracy" ] && [ "$accuracy" != check ]; then
+	mid=$(echo "$points" | tr ',' '\n' | awk '{ p[NR] = $0 } END { print p[int((NR + 1) / 2)] }')
+	say "accuracy: choosing the grid at focus:dose $mid, within $accuracy %"
+	femrun "$resist" "$mid" "$dir/accuracy" -accuracy "$accuracy" -j "$jobs" ||
+		die "-accuracy $accuracy: the grid could not be chosen (see $dir/accuracy)"
+	# accuracy.opts: "-accuracy P NX NY NZ / ..." (fem(1), FILES)
+	grid=$(awk '{ print $3, $4, $5 }' "$dir/accuracy/accuracy.opts")
+	say "accuracy: grid $grid (nx ny nz)"
+fi
+setup="$(cksum <"$mask") $etchtime $etchopts -etch $etchx -measure $margs -points $points${grid:+ -grid $grid}"
 
 # prepare VALUES [POINTS]: writes the trial resist file, makes its fem
 # directory (images linked from the first run) and prints it
@@ -312,5 +350,20 @@ if [ -s "$dir/bossung.2D" ]; then
 		die "drawplot failed on $dir/bossung.2D or residuals.2D"
 fi
 [ $st -eq 0 ] || exit $st
+# -accuracy: the fitted CDs' discretisation error, fem -accuracy check on
+# the result at the grid of the fit (each point also one level coarser)
+if [ -n "$accuracy" ]; then
+	femrun "$dir/resist.fit.in" "$points" "$dir/accuracy-result" -accuracy check -j "$jobs" ||
+		die "-accuracy: the estimate on the result failed (see $dir/accuracy-result)"
+	worst=$(cat "$dir"/accuracy-result/f*/d*/measure.dat | awk '!/^#/ && $2 > 0 {
+		e = 100 * $NF / $2; if (e > m) m = e } END { printf "%.3g\n", m }')
+	lim=$accuracy
+	[ "$lim" != check ] || lim=1
+	if awk -v w="$worst" -v l="$lim" 'BEGIN { exit !(w > l) }'; then
+		echo "$prog: warning: the fitted CDs' estimated discretisation error is up to $worst % (over $lim %; the err column of $dir/accuracy-result/f*/d*/measure.dat)" >&2
+	else
+		say "accuracy: the fitted CDs' estimated discretisation error is at most $worst %"
+	fi
+fi
 say "$dir/calib.dat, $dir/resist.fit.in: $(grep '^# rms_nm' "$dir/calib.dat" | cut -d' ' -f2-)${validate:+, validation $(grep '^# validate_rms_nm' "$dir/calib.dat" | cut -d' ' -f3) nm}; $(( $(date +%s) - t0 )) s"
 exit 0

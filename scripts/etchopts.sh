@@ -68,12 +68,17 @@ etch_engine_default() {
 # by default (-seg at most its x-y spacing, -dt from -seg, fast marching
 # on the rate grid); a -seg or -dt given is scaled with the grid.  Level
 # 0 is the inputs' grids (femwin -resolution), level -1 about twice their
-# spacing, level k > 0 2^k times finer.  Each level is solved once and
-# measured; from level 0 on, measure -accuracy compares it with the level
-# before (measure(1) ACCURACY: Richardson, order 1 assumed) and writes
-# the err column.  P: refine until every err is under P % of its cd (at
-# most ACC_MAX_LEVEL); check: levels -1 and 0 only, the estimate of the
-# inputs' own grid.
+# spacing, -2 four times, level k > 0 2^k times finer.  Each level is
+# solved once and measured; from the third level on, measure -accuracy
+# compares it with the two before (measure(1) ACCURACY: Richardson with
+# the order observed from the three, refused when they are not in the
+# asymptotic range) and writes the err column.  P: refine until every
+# err of a level from 0 on is under P % of its cd and trusted (at most
+# ACC_MAX_LEVEL); check: levels -2 to 0 only, the estimate of the inputs'
+# own grid.  A grid too coarse for level -2, or a level -2 a stage
+# refuses, starts at -1 (three levels then need level 1 for P; check gets
+# the two-level estimate, order 1 assumed); a level below 0 that measure
+# refuses is left out of the estimate (check may then print no err).
 ACC_MAX_LEVEL=3
 
 # accuracy_opt ARGS...: when $1 is -accuracy, sets $accuracy to its
@@ -99,10 +104,14 @@ accuracy_value() {
 		awk -v v="$1" 'BEGIN { exit !(v > 0 && v < 100) }'
 }
 
-# acc_grid NX NY NZ K: the counts of level K, "nx ny nz"
+# acc_grid NX NY NZ K: the counts of level K, "nx ny nz" (a level below
+# 0 halves the intervals of the one above, rounding the count down)
 acc_grid() {
 	awk -v nx="$1" -v ny="$2" -v nz="$3" -v k="$4" '
-	function g(n) { return k < 0 ? int(n / 2) + 1 : (n - 1) * 2 ^ k + 1 }
+	function g(n,   i) {
+		if (k >= 0) return (n - 1) * 2 ^ k + 1
+		for (i = 0; i > k; i--) n = int(n / 2) + 1
+		return n }
 	BEGIN { print g(nx), g(ny), g(nz) }'
 }
 
@@ -113,6 +122,13 @@ acc_ratio() {
 		split(c, C, " "); split(f, F, " "); r = 0
 		for (i = 1; i <= 3; i++) { q = (F[i] - 1) / (C[i] - 1); if (r == 0 || q < r) r = q }
 		printf "%.10g\n", r }'
+}
+
+# acc_coarsens "NX NY NZ" "NX NY NZ": the first grid is coarser than the
+# second by a ratio of 1.5 at least (a smaller one makes the estimate a
+# difference of nearly equal solves)
+acc_coarsens() {
+	awk -v r="$(acc_ratio "$1" "$2")" 'BEGIN { exit !(r >= 1.5) }'
 }
 
 # acc_etchopts F: $etchopts with the values of -seg and -dt times F
@@ -127,39 +143,81 @@ acc_etchopts() {
 # accuracy_loop MEASURE-PROGRAM P|check NX NY NZ TABLEDIR: solves level
 # after level through the driver's own acc_solve "NX NY NZ" ETCHOPTS
 # (which leaves the developed surface in $acc_surface), measures each
-# with $margs into TABLEDIR/NXxNYxNZ.dat, and stops when measure's
-# estimate holds.  Sets acc_table (the last table) and acc_grid (its
-# counts); returns 0 when the estimate is within P (always for check), 3
-# when ACC_MAX_LEVEL is reached without it, 1 when a stage fails.
+# with $margs into TABLEDIR/NXxNYxNZ.dat (measure's notes in .log
+# beside it), and stops when measure's estimate holds.  Sets acc_table
+# (the last table), acc_grid (its counts) and acc_prevg (the level
+# before's); returns 0 when the estimate is within P (always for check),
+# 3 when ACC_MAX_LEVEL is reached without it, 1 when a stage fails.
 accuracy_loop() {
 	acc_m=$1 acc_p=$2 acc_base="$3 $4 $5" acc_dir=$6
-	acc_k=-1 acc_prev="" acc_prevg=""
+	acc_k=-2 acc_prev="" acc_prevg="" acc_pprev="" acc_pprevg=""
+	# shellcheck disable=SC2086 # acc_base is three words on purpose
+	acc_coarsens "$(acc_grid $acc_base -2)" "$(acc_grid $acc_base -1)" || acc_k=-1
+	# shellcheck disable=SC2086 # acc_base is three words on purpose
+	acc_coarsens "$(acc_grid $acc_base -1)" "$acc_base" ||
+		{ echo "${prog}: -accuracy: the grid $acc_base is too coarse to coarsen" >&2; return 1; }
 	while :; do
 		# shellcheck disable=SC2086 # acc_base is three words on purpose
 		acc_grid=$(acc_grid $acc_base "$acc_k")
 		# shellcheck disable=SC2086 # the grid is three words on purpose
 		set -- $acc_grid
-		acc_table=$acc_dir/$1x$2x$3.dat
-		acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||
-			return 1
-		if [ -z "$acc_prev" ]; then
-			# shellcheck disable=SC2086 # margs is a list of words on purpose
-			"$acc_m" $margs -o "$acc_table" "$acc_surface" || return 1
+		acc_table=$acc_dir/$1x$2x$3.dat acc_log=$acc_dir/$1x$2x$3.log
+		if [ "$acc_k" -eq -2 ]; then
+			# level -2 may be too coarse for a stage (bleach refuses
+			# points further apart than half the standing-wave period):
+			# then the levels start at -1
+			acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" \
+				2>"$acc_log" || {
+				[ -n "${quiet:-}" ] || echo "${prog}: accuracy: level -2 ($acc_grid) not solved" \
+					"($(tail -n 1 "$acc_log")): the levels start at -1" >&2
+				acc_k=-1
+				continue
+			}
 		else
-			acc_r=$(acc_ratio "$acc_prevg" "$acc_grid")
-			awk -v r="$acc_r" 'BEGIN { exit !(r >= 1.5) }' ||
-				{ echo "${prog}: -accuracy: the grid $acc_base is too coarse to coarsen" >&2; return 1; }
-			acc_st=0
-			# shellcheck disable=SC2086 # margs is a list of words on purpose
-			"$acc_m" $margs -accuracy "$acc_p" -coarse "$acc_prev" -ratio "$acc_r" \
-				-o "$acc_table" "$acc_surface" 2>"$acc_dir/measure.err" || acc_st=$?
-			case $acc_st in
-			0) cat "$acc_dir/measure.err" >&2; return 0 ;;
-			3) [ "$acc_k" -lt "$ACC_MAX_LEVEL" ] ||
-				{ cat "$acc_dir/measure.err" >&2; return 3; } ;;
-			*) cat "$acc_dir/measure.err" >&2; return 1 ;;
-			esac
+			acc_solve "$acc_grid" "$(acc_etchopts "$(acc_ratio "$acc_grid" "$acc_base")")" ||
+				return 1
 		fi
+		# what is measured: P only where the level may stop the loop
+		# (from 0 on, with two levels before it), else check
+		acc_a=check
+		[ "$acc_p" = check ] || [ "$acc_k" -lt 0 ] || [ -z "$acc_pprev" ] || acc_a=$acc_p
+		acc_st=0
+		# shellcheck disable=SC2086 # margs is a list of words on purpose
+		if [ -z "$acc_prev" ]; then
+			"$acc_m" $margs -o "$acc_table" "$acc_surface" 2>"$acc_log" || acc_st=$?
+		elif [ -z "$acc_pprev" ]; then
+			"$acc_m" $margs -accuracy "$acc_a" -coarse "$acc_prev" \
+				-ratio "$(acc_ratio "$acc_prevg" "$acc_grid")" \
+				-o "$acc_table" "$acc_surface" 2>"$acc_log" || acc_st=$?
+		else
+			"$acc_m" $margs -accuracy "$acc_a" -coarse "$acc_prev" \
+				-ratio "$(acc_ratio "$acc_prevg" "$acc_grid")" -coarser "$acc_pprev" \
+				-ratio2 "$(acc_ratio "$acc_pprevg" "$acc_prevg")" \
+				-o "$acc_table" "$acc_surface" 2>"$acc_log" || acc_st=$?
+		fi
+		case $acc_st in
+		0|3) ;;
+		*)
+			[ "$acc_k" -lt 0 ] || { cat "$acc_log" >&2; return 1; }
+			# a coarse level measure refuses (a surface through a gap,
+			# a feature that does not form yet) gives no estimate: the
+			# levels above start without it
+			[ -n "${quiet:-}" ] || echo "${prog}: accuracy: level $acc_k ($acc_grid) not measured" \
+				"($(tail -n 1 "$acc_log")): no estimate from it" >&2
+			acc_prev="" acc_prevg="" acc_pprev="" acc_pprevg=""
+			acc_k=$((acc_k + 1))
+			continue ;;
+		esac
+		if [ "$acc_k" -ge 0 ]; then
+			if [ "$acc_p" = check ]; then
+				cat "$acc_log" >&2; return 0
+			elif [ "$acc_a" != check ] && [ "$acc_st" -eq 0 ]; then
+				cat "$acc_log" >&2; return 0
+			elif [ "$acc_k" -ge "$ACC_MAX_LEVEL" ]; then
+				cat "$acc_log" >&2; return 3
+			fi
+		fi
+		acc_pprev=$acc_prev acc_pprevg=$acc_prevg
 		acc_prev=$acc_table acc_prevg=$acc_grid
 		acc_k=$((acc_k + 1))
 	done

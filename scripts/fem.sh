@@ -23,7 +23,8 @@ usage() {
 usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
            -focus F1:F2:STEP|F1,F2,... -measure "MEASURE-ARGS"
            (or -points F:D,F:D,... instead of -dose and -focus)
-           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-d DIR] [-j N] [-keep] [-n] [-big]
+           [-target CD -tol PCT] [-seeds K] [-accuracy [P|check]] [-grid "NX NY NZ"]
+           [-d DIR] [-j N] [-keep] [-n] [-big]
            [-slurm [-chunk K] [-sbatch "OPTS"]] [etch options] [-q]
        fem -collect [-d DIR] [-target CD -tol PCT] [-q]
   -if FILE      splat input file (the mask and the optics)
@@ -46,6 +47,9 @@ usage: fem -if mask.in -bf resist.in -et T -dose D1:D2:STEP|D1,D2,...
                 column err (um); a point over P fails
   -accuracy check  every point at the inputs' grids and one level coarser:
                 the err column, no refinement
+  -grid "NX NY NZ"  every point at this image grid and nz (etch's
+                resolution scaled with it) instead of the inputs' (not
+                with -accuracy P, which chooses it)
   -d DIR        the sweep's directory (default fem)
   -j N          points run at once (make -j N; default: the cores)
   -keep         keep every point's rate file and curves.plot
@@ -70,7 +74,7 @@ need_val() { [ $# -ge 2 ] || bad "option $1 needs a value"; }
 
 mask="" resist="" etchtime="" doses="" foci="" margs="" target="" tol=""
 dir=fem jobs="" keep="" dryrun="" slurm="" chunk=1 sbopts="" collect="" quiet="" big=""
-etchopts="" points="" seeds="" accuracy=""
+etchopts="" points="" seeds="" accuracy="" fixgrid=""
 while [ $# -gt 0 ]; do
 	case $1 in
 	--help|-h) usage; exit 0 ;;
@@ -96,6 +100,7 @@ while [ $# -gt 0 ]; do
 	-q) quiet=-q; shift ;;
 	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
 	-tile|-halo) bad "$1: fem does not tile (every point would be a tiled run); tile one point with sample3D -tile" ;;
+	-grid) need_val "$@"; fixgrid=$2; shift 2 ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
 done
@@ -147,7 +152,7 @@ DRAWPLOT=$(findprog drawplot)
 
 # -collect: everything else is in DIR/Makefile
 if [ -n "$collect" ]; then
-	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds$accuracy" ] ||
+	[ -z "$mask$resist$etchtime$doses$foci$points$margs$slurm$dryrun$keep$etchopts$seeds$accuracy$fixgrid" ] ||
 		bad "-collect takes only -d, -target, -tol and -q: the sweep is in DIR/Makefile"
 	[ -f "$dir/Makefile" ] || die "$dir/Makefile: no sweep there (run fem without -collect first)"
 	st=0
@@ -323,13 +328,22 @@ etch_engine_default
 
 # -accuracy: the grids of the inputs (the library's readers, through
 # femwin); P is chosen below at the nominal point, check keeps them
-grid="" cgrid="" ratio="" rgrid=""
-if [ -n "$accuracy" ]; then
-	[ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
+grid="" cgrid="" ratio="" rgrid="" order=1
+if [ -n "$fixgrid" ]; then
+	printf '%s\n' "$fixgrid" | grep -Eq '^ *[1-9][0-9]* +[1-9][0-9]* +[1-9][0-9]* *$' &&
+		awk -v g="$fixgrid" 'BEGIN { split(g, n, " "); exit !(n[1] >= 2 && n[2] >= 2 && n[3] >= 2 && n[1] * n[2] * n[3] <= 1e10) }' ||
+		badv "-grid \"$fixgrid\": expected three whole numbers NX NY NZ, each at least 2"
+	[ -z "$accuracy" ] || [ "$accuracy" = check ] ||
+		bad "-grid with -accuracy $accuracy: -accuracy P chooses the grid (-accuracy check estimates at -grid's)"
+fi
+if [ -n "$accuracy$fixgrid" ]; then
+	[ -z "$accuracy" ] || [ "$accuracy" = check ] || [ -z "$dryrun$slurm" ] ||
 		bad "-accuracy $accuracy runs the nominal point to choose the grid: not with -n or -slurm (give -accuracy check)"
 	grid=$("$FEMWIN" -resolution "$mask" "$resist" 2>"$chk/err") ||
 		die "$(sed -n '1{s/^femwin: //;p;}' "$chk/err")"
 	rgrid=$grid
+	# shellcheck disable=SC2086 # three words on purpose
+	[ -z "$fixgrid" ] || grid=$(echo $fixgrid)
 fi
 
 # fem_accuracy_choose: sets grid (the points' counts "nx ny nz"), cgrid
@@ -351,7 +365,11 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
 	acc_surface=$dir/accuracy/curves.plot
 }
 fem_accuracy_choose() {
-	[ -n "$accuracy" ] || return 0
+	if [ -z "$accuracy" ]; then
+		# -grid alone: etch's options scaled with the grid
+		[ -z "$fixgrid" ] || etchopts=$(acc_etchopts "$(acc_ratio "$grid" "$rgrid")")
+		return 0
+	fi
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	if [ "$accuracy" = check ]; then
 		cgrid=$(acc_grid $grid -1)
@@ -367,6 +385,16 @@ fem_accuracy_choose() {
 		*) die "-accuracy: the nominal point failed (focus $nomf dose $nomd)" ;;
 		esac
 		grid=$acc_grid cgrid=$acc_prevg
+		# the order the nominal point converged at, read back from its
+		# last table's err as if err = |change| / (r^p - 1) (measure's
+		# safety factor and fallbacks only lower it): the lowest over
+		# its cds, which the points' two-solve estimates assume
+		# shellcheck disable=SC2086 # the grid is three words on purpose
+		order=$(awk -v r="$(acc_ratio "$cgrid" "$grid")" 'NR == FNR { if (!/^#/) c[FNR] = $2; next }
+			!/^#/ && $NF > 0 { d = $2 - c[FNR]; if (d < 0) d = -d; if (d == 0) next
+				p = log(1 + d / $NF) / log(r); if (m == "" || p < m) m = p }
+			END { if (m == "") m = 1; if (m < 0.5) m = 0.5; if (m > 2) m = 2; printf "%.3g\n", m }' \
+			"$dir/accuracy/$(echo $cgrid | tr ' ' x).dat" "$acc_table")
 		rm -f "$dir/accuracy/rate" "$dir/accuracy/curves.plot" "$dir/accuracy/image.cont"
 		say "accuracy: grid $grid (nx ny nz) at the nominal point, within $accuracy %"
 	fi
@@ -408,7 +436,7 @@ fem_accuracy_choose
 etchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$etchopts")"
 cetchq=""
 [ -z "$accuracy" ] || cetchq="$(mkq -et) $(mkq "$etchtime")$(mkwords -etch "$cetchopts")"
-echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio}" | put accuracy.opts
+echo "${accuracy:+-accuracy $accuracy $grid / $cgrid $ratio $order}${fixgrid:+ -grid $grid}" | put accuracy.opts
 printf '%s\n' "$etchq${accuracy:+ / $cetchq}" | put etch.opts
 # the runs of a point are its directory fF/dD, or with -seeds one
 # directory fF/dD/sK per seed: seedsfx lists the suffixes (no fork per
@@ -463,7 +491,12 @@ S
 		echo "CSPLATGRID = -grid $4 $5"
 		echo "CBLEACHNZ = -nz $6"
 		printf 'CETCHOPTS = %s\n' "$cetchq"
-		echo "ACCURACY = -accuracy $accuracy -ratio $ratio"
+		echo "ACCURACY = -accuracy $accuracy -ratio $ratio -order $order"
+	elif [ -n "$fixgrid" ]; then
+		# shellcheck disable=SC2086 # three words on purpose
+		set -- $grid
+		echo "SPLATGRID = -grid $1 $2"
+		echo "BLEACHNZ = -nz $3"
 	fi
 	echo "TARGET = $target"
 	echo "TOL = $tol"
@@ -659,6 +692,9 @@ interrupted() {
 trap interrupted INT TERM HUP
 
 say "$dir: $npts points ($nf foci x $nd doses), make -j $jobs"
+# the CDs' discretisation error is not estimated unless asked: say so
+[ -n "$accuracy" ] ||
+	say "the CDs' discretisation error is not estimated: -accuracy check estimates it (one coarser solve a point), -accuracy 1 bounds it"
 [ -n "$quiet" ] || { progress_loop & progress_pid=$!; }
 st=0
 make -k -s -C "$dir" --no-print-directory -j "$jobs" all || st=$?

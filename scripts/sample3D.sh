@@ -32,7 +32,7 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
                 [-solid] [-ascii] [-rb binary-etchrate-file] [-ra ascii-etchrate-file]
                 [-et etchtime] [-pt printtime] [-plot] [-hidden] [-e | -noe]
                 [-cut x|y VALUE|mid] [-last] [-pwindow X0 X1 Y0 Y1|all]
-                [-measure "ARGS" [-accuracy [P|check]]]
+                [-measure "ARGS" [-accuracy [P|check|off]]]
                 [-tile W [-halo H] [-j N] [-tiledir D] [-slurm]]
                 [etch options] [-q]
   -if FILE    run splat on FILE; its contour-file goes on to bleach
@@ -63,6 +63,9 @@ usage: sample3D [-if splat-inputfile] [-cf contour-file] [-bf bleach-inputfile]
               and etch's resolution until every CD's estimated error is
               under P % (default 1); the table gains the column err (um)
   -accuracy check  the estimate at the inputs' own grids, no refinement
+              (the default with -measure, -if and -bf; a warning when
+              an err is over 1 %)
+  -accuracy off  no estimate: the CDs of the inputs' grids alone
   -h, --help  this text
 U
 	tile_usage
@@ -103,7 +106,8 @@ while [ $# -gt 0 ]; do
 			done
 			pwindow="-window $2 $3 $4 $5"; shift 5
 		fi ;;
-	-accuracy) accuracy_opt "$@"; shift "$etchopt_n" ;;
+	-accuracy) if [ "${2:-}" = off ]; then accuracy=off; shift 2
+		else accuracy_opt "$@"; shift "$etchopt_n"; fi ;;
 	-tile|-halo|-j|-tiledir|-slurm) tile_opt "$@"; shift "$tile_n" ;;
 	*) etchopt "$@" || bad "unknown option $1"; shift "$etchopt_n" ;;
 	esac
@@ -120,11 +124,19 @@ etchopts="$etchopts -cut $cutaxis $cutval"
 	bad "-rb/-ra bypass splat and bleach: do not combine them with -if, -cf or -bf"
 [ -z "$splat_in" ] || [ -z "$contour" ] || bad "give either -if or -cf, not both"
 [ -z "$measureopts" ] || [ -n "$etchtime" ] || bad "-measure needs -et (it measures etch's result)"
-if [ -n "$accuracy" ]; then
+if [ -n "$accuracy" ] && [ "$accuracy" != off ]; then
 	[ -n "$measureopts" ] || bad "-accuracy needs -measure (it bounds the error of the CDs)"
 	[ -n "$splat_in" ] && [ -n "$bleach_in" ] ||
 		bad "-accuracy refines splat's and bleach's grids: give -if and -bf"
 fi
+# the CDs' discretisation error is estimated unless asked not to: at the
+# inputs' grids (check) whenever the grids can be coarsened, -if and -bf
+# (levels -2 and -1 cost about a seventh of the run); a tiled run is
+# estimated a tile at a time by hand (tile.sh)
+if [ -z "$accuracy" ] && [ -z "$tile_w" ] && [ -n "$measureopts" ] && [ -n "$splat_in" ] && [ -n "$bleach_in" ]; then
+	accuracy=check
+fi
+[ "$accuracy" != off ] || accuracy=""
 # the engine measure reads: fast marching unless an etch option says
 [ -z "$measureopts" ] || etch_engine_default
 if [ -n "$measureopts" ]; then
@@ -167,12 +179,13 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS
 	# shellcheck disable=SC2086 # the grid is three words on purpose
 	set -- $1 "$2"
 	say "accuracy: splat -grid $1 $2, bleach -nz $3, etch$4"
-	splat $quiet -grid "$1" "$2" "$splat_in" || die "splat failed; stopping"
+	splat $quiet -grid "$1" "$2" -bf "$bleach_in" "$splat_in" ||
+		{ echo "$prog: splat failed" >&2; return 1; }
 	bleach $quiet $ascii $solid -nz "$3" -o "$rate" "$contour" "$bleach_in" ||
-		die "bleach failed; stopping"
+		{ echo "$prog: bleach failed" >&2; return 1; }
 	# shellcheck disable=SC2086 # etch's options are a list of words on purpose
 	etch $quiet -et "$etchtime" ${printtime:+-pt "$printtime"} $4 "$rate" ||
-		die "etch failed; stopping"
+		{ echo "$prog: etch failed" >&2; return 1; }
 	acc_surface=curves.plot
 }
 if [ -n "$accuracy" ]; then
@@ -187,6 +200,16 @@ if [ -n "$accuracy" ]; then
 	cat "$acc_table"
 	if [ $st -eq 3 ]; then
 		die "-accuracy $accuracy: not reached at grid $acc_grid (the err column above); stopping"
+	fi
+	# check: say when the inputs' grids hold the CDs to less than the
+	# default 1 %, or the levels are not in the asymptotic range
+	if [ "$accuracy" = check ] && ! head -n 1 "$acc_table" | grep -q ' err$'; then
+		echo "$prog: warning: no estimate of the CDs' discretisation error: the coarser levels could not be measured (accuracy/*.log)" >&2
+	elif [ "$accuracy" = check ]; then
+		if ! awk '!/^#/ && $NF > 0.01 * $2 { exit 1 }' "$acc_table" ||
+			grep -q 'asymptotic' "$acc_log"; then
+			echo "$prog: warning: at the inputs' grids a CD's estimated discretisation error is over 1 % (the err column): -accuracy 1 refines the grid" >&2
+		fi
 	fi
 	say "accuracy: grid $acc_grid (nx ny nz), the tables of every level in accuracy/"
 fi

@@ -20,7 +20,8 @@ static const char usage[] =
 	"usage: measure [-s set] (-at z1,z2,... | -rel p1,p2,...)\n"
 	"               (-hole X Y | -space X Y x|y | -line X Y x|y | -holes)\n"
 	"               [-ler [-psd file]] [-lcdu] [-o file] [-plot file] [-force]\n"
-	"               [-accuracy P|check -coarse table [-ratio r]] surface.plot\n"
+	"               [-accuracy P|check -coarse table [-ratio r]\n"
+	"                [-coarser table [-ratio2 q]] [-order p]] surface.plot\n"
 	"  -s set          the set (print time) to measure, from 1 in file order\n"
 	"                  (default: the last)\n"
 	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
@@ -45,11 +46,18 @@ static const char usage[] =
 	"                  etch without -deloop), or a section through a gap of\n"
 	"                  the surface (open border that -deloop left)\n"
 	"  -accuracy P|check  add the column err, the discretisation error of cd\n"
-	"                  estimated from the table of the same measurement on a\n"
-	"                  coarser solve (Richardson, order 1 assumed); with P\n"
-	"                  (percent), exit 3 when an err is over P %% of its cd\n"
+	"                  estimated from the tables of the same measurement on\n"
+	"                  coarser solves (Richardson; the order observed from\n"
+	"                  three solves, 1 assumed from two); with P (percent),\n"
+	"                  exit 3 when an err is over P %% of its cd or the\n"
+	"                  solves are not in the asymptotic range\n"
 	"  -coarse table   that table (measure's output on the coarser solve)\n"
 	"  -ratio r        its grid spacing over this one's (default 2)\n"
+	"  -coarser table  the table of a solve coarser still: the order is\n"
+	"                  observed from the three\n"
+	"  -ratio2 q       its grid spacing over -coarse's (default 2)\n"
+	"  -order p        without -coarser, the order assumed (0.5 to 2,\n"
+	"                  default 1)\n"
 	"  -h, --help      this text\n";
 
 /* A comma-separated list of finite numbers. */
@@ -155,8 +163,8 @@ static const double RATIO_MIN = 1.01, RATIO_MAX = 100;
 static void parse_accuracy(struct args *a, struct options *o, const char *acc)
 {
 	if (!acc) {
-		if (o->coarse)
-			args_error(a, "-coarse goes with -accuracy");
+		if (o->coarse || o->coarser)
+			args_error(a, "%s goes with -accuracy", o->coarse ? "-coarse" : "-coarser");
 		return;
 	}
 	o->have_accuracy = 1;
@@ -178,6 +186,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 	const char *at = NULL, *rel = NULL, *acc = NULL;
 	const char **slots[] = {&o->input};
 	o->ratio = 2;
+	o->ratio2 = 2;
+	o->order = 1;
 	while (a.i < argc) {
 		args_help_exit(&a, 1);
 		if (a.i >= argc)
@@ -187,6 +197,9 @@ static void parse_options(int argc, char **argv, struct options *o)
 		    args_str(&a, "-o", &o->out) || args_str(&a, "-plot", &o->plot) ||
 		    args_str(&a, "-accuracy", &acc) || args_str(&a, "-coarse", &o->coarse) ||
 		    args_num(&a, "-ratio", RATIO_MIN, RATIO_MAX, &o->ratio) ||
+		    args_str(&a, "-coarser", &o->coarser) ||
+		    args_num(&a, "-ratio2", RATIO_MIN, RATIO_MAX, &o->ratio2) ||
+		    args_num(&a, "-order", ACCURACY_ORDER_MIN, ACCURACY_ORDER_MAX, &o->order) ||
 		    parse_feature(&a, o))
 			continue;
 		if (args_flag(&a, "-force")) {

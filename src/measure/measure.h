@@ -33,6 +33,10 @@ struct options {
 	double accuracy;        /* percent; 0 for check (estimate only) */
 	int have_accuracy;
 	double ratio;           /* coarse / fine grid spacing (default 2) */
+	/* -coarser TABLE [-ratio2 Q]: a third solve, the order observed */
+	const char *coarser;    /* the table of the solve coarser than -coarse */
+	double ratio2;          /* coarser / coarse grid spacing (default 2) */
+	double order;           /* -order: assumed from two solves (default 1) */
 	const char *input;
 };
 
@@ -73,9 +77,20 @@ void measure_feature(const struct surf *s, const struct options *o,
 
 /* z raised off the substrate as the table's sections are (feature.c). */
 double feature_height(const struct surf *s, double z);
+/* The orders of convergence the estimate trusts: below 0.5 a halving
+ * shrinks the change by less than 1.41 and the estimate would be more
+ * than 2.4 times the change, with the order itself uncertain; above 2,
+ * the highest order in the chain (the image and the rates are
+ * interpolated linearly), the coarser change is not yet asymptotic and
+ * order 1 is used (accuracy.c). */
+#define ACCURACY_ORDER_MIN 0.5
+#define ACCURACY_ORDER_MAX 2
+
 /* accuracy.c: the Richardson estimate of each row's discretisation
- * error from the coarse table; returns the number of rows whose estimate
- * is over o->accuracy percent of their cd (0 for check). */
+ * error from the coarse table (and the coarser one: the order observed);
+ * returns the number of rows whose estimate is over o->accuracy percent
+ * of their cd or whose solves are not in the asymptotic range (0 for
+ * check). */
 int accuracy_estimate(const struct options *o, struct result *r);
 
 /* The table on o->out, and the plot file if o->plot. */

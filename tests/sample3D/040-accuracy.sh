@@ -6,12 +6,16 @@
 #    4 times the inputs' grids (splat -grid 65 65, bleach -nz 237, fast
 #    marching); the files left are those of the table (measure on
 #    curves.plot gives its cds again), and the tables of the levels are in
-#    accuracy/, the first without err;
+#    accuracy/, from level -2 (5 x 5 x 16) on, whose table alone has no err;
 #  - -accuracy check keeps the inputs' grid: its cds are byte for byte
-#    those of the plain run, and its err is |cd - cd at grid 9 x 9, nz 31|
-#    / (r - 1) (the level below, solved here by hand; order 1 assumed; r =
-#    59/30, the smallest of the spacing ratios 16/8 and 59/30) within 3e-6
-#    um (the tables' rounding, over r - 1);
+#    those of -accuracy off (no estimate), and its err is measure's
+#    three-level estimate from the levels below solved here by hand (9 x 9
+#    x 31 at the spacing ratio 59/30, the smallest of 16/8 and 59/30, and
+#    5 x 5 x 16 at 2 below it; tests/accuracy/001 checks the estimate
+#    itself);
+#  - with -if and -bf, -measure alone is -accuracy check: the same table
+#    byte for byte, and the warning that an err is over 1 % (at this grid
+#    the bottom cd moves 0.19 um when the grid is halved);
 #  - without an engine option, -measure develops by fast marching: the
 #    same curves.plot byte for byte as -method fmm;
 #  - -accuracy without -measure, with -cf, or with a bad value (0, 100,
@@ -44,7 +48,8 @@ grep -v '^#' table.txt | cut -d' ' -f1-5 >printed.txt
 grep -v '^#' again.txt >again-rows.txt
 same printed.txt again-rows.txt
 [ "$(ls accuracy/*.dat | wc -l)" -ge 2 ] || fail "accuracy/ holds fewer than two levels: $(ls accuracy)"
-head -n 1 accuracy/9x9x31.dat | grep -q err && fail "the coarsest level has an err column"
+head -n 1 accuracy/5x5x16.dat | grep -q err && fail "the coarsest level has an err column"
+head -n 1 accuracy/9x9x31.dat | grep -q err || fail "level -1 has no err column"
 cd ..
 
 # the reference, 4 times the inputs' grids, by hand
@@ -57,24 +62,34 @@ paste -d' ' ref.txt acc/table.txt | awk -v p=$P '!/^#/ { d = $2 - $7; if (d < 0)
 	if (d > p / 100 * $2) { print "cd " $7 " at z " $1 ": reference " $2; bad = 1 } }
 	END { exit bad }' || fail "a cd is off the reference by more than $P %"
 
-# -accuracy check: the inputs' grid, err against the level below
-mkdir chk plain && cd plain
-sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" >table.txt ||
-	fail "sample3D -measure"
+# -accuracy check: the inputs' grid, err from the two levels below
+mkdir chk plain dflt && cd plain
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" -accuracy off >table.txt ||
+	fail "sample3D -measure -accuracy off"
+head -n 1 table.txt | grep -q err && fail "-accuracy off: an err column"
 cd ../chk
-sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" -accuracy check >table.txt ||
-	fail "sample3D -accuracy check"
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" -accuracy check >table.txt \
+	2>err.txt || fail "sample3D -accuracy check"
 cut -d' ' -f1-5 table.txt | grep -v '^#' >cds.txt
 grep -v '^#' ../plain/table.txt >plain.txt
 same cds.txt plain.txt
+cd ../dflt
+sample3D -q -if ../mask.in -bf ../resist.in -et 60 -last -measure "$M" >table.txt 2>err.txt ||
+	fail "sample3D -measure (the default estimate)"
+same table.txt ../chk/table.txt
+grep -q '^sample3D: warning: .*over 1 %' err.txt || fail "no warning at 6 % err: $(cat err.txt)"
 cd ..
-splat -q -grid 9 9 -o low.cont mask.in && bleach -q -nz 31 -o low.bin low.cont resist.in &&
-	etch -q -et 60 -method fmm -last -no2d -o low.plot low.bin || fail "the level below, by hand"
+for g in "9 31" "5 16"; do
+	set -- $g
+	splat -q -grid $1 $1 -o low$1.cont mask.in && bleach -q -nz $2 -o low$1.bin low$1.cont resist.in &&
+		etch -q -et 60 -method fmm -last -no2d -o low$1.plot low$1.bin || fail "level $1 x $1 x $2 by hand"
+	# shellcheck disable=SC2086 # M is a list of words on purpose
+	measure $M -o low$1.txt low$1.plot
+done
 # shellcheck disable=SC2086 # M is a list of words on purpose
-measure $M -o low.txt low.plot
-paste -d' ' low.txt chk/table.txt | awk '!/^#/ { d = $2 - $7; if (d < 0) d = -d; d /= 59 / 30 - 1
-	e = $11 - d; if (e > 3e-6 || e < -3e-6) { print "err " $11 " at z " $1 ", expected " d; bad = 1 } }
-	END { exit bad }' || fail "-accuracy check: err is not |cd - cd below|"
+measure $M -accuracy check -coarse low9.txt -ratio "$(awk 'BEGIN { printf "%.10g", 59 / 30 }')" \
+	-coarser low5.txt -ratio2 2 -o want.txt chk/curves.plot 2>/dev/null || fail "measure the estimate by hand"
+same want.txt chk/table.txt
 
 # the default engine with -measure is fast marching
 mkdir fmm && cd fmm
