@@ -219,12 +219,12 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 #define PEB_MAX_STEPS 65536
 /* The x-y diffusion steps for n column steps: n itself when both periods
  * are at most PEB_XY_CIRC_MAX (an x-y step then costs about a column
- * step, less than choosing fewer would); otherwise starting from n /
- * PEB_OUTER_START, doubled until m of the x-z and y-z slices through the
+ * step, less than choosing fewer would); otherwise starting from kmin
+ * (0: n / PEB_OUTER_START), doubled until m of the x-z and y-z slices through the
  * steepest image edge changes by less than PEB_TOL; the doubled count
  * (at most n), the last change in *change. */
 int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
-		     double dx, double dy, double dz, int n, double *change);
+		     double dx, double dy, double dz, int n, int kmin, double *change);
 #define PEB_OUTER_START 16
 
 /* ---- shotnoise.c: photon and acid shot noise (bleach.5 stochastic) ---- */

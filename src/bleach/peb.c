@@ -826,7 +826,7 @@ static void slice_run(const struct peb_params *pp, const double *h0, int nx, int
 }
 
 int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
-		     double dx, double dy, double dz, int n, double *change)
+		     double dx, double dy, double dz, int n, int kmin, double *change)
 {
 	if (change)
 		*change = 0;
@@ -857,7 +857,7 @@ int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int 
 	int len = nx > ny ? nx : ny;
 	double *a = xreallocarray(NULL, (size_t)len * nz, 2 * sizeof *a);
 	double *b = xreallocarray(NULL, (size_t)len * nz, 2 * sizeof *b);
-	int K = n / PEB_OUTER_START > 0 ? n / PEB_OUTER_START : 1;
+	int K = kmin > 0 ? kmin : n / PEB_OUTER_START > 0 ? n / PEB_OUTER_START : 1;
 	double diff = 0, prev = 0;
 	/* each count's slices run once: the finer of a pair is the coarser of
 	 * the next */

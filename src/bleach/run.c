@@ -210,7 +210,17 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 		     (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
 		     (double)np * (3 + 3 * in->stochastic) * sizeof(double));
 	double change_xy;
-	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
+	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, 0, &change_xy);
+	/* x-y diffusion at every column step and still not converged: the
+	 * columns' count is too small for the x-y structure (a window of
+	 * lines on a 1 nm grid); doubled until the slices converge */
+	while (!(change_xy < PEB_TOL) && nouter == n && n < PEB_MAX_STEPS) {
+		n *= 2;
+		nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, n / 4, &change_xy);
+	}
+	if (!(change_xy < PEB_TOL))
+		die("%s:%ld: the bake did not converge in %d steps (m of the x-y slices still "
+		    "changes by %g)", input, in->line_peb, n, change_xy);
 	/* shot noise after the step choice: the counts are chosen for the
 	 * deterministic acid, which the linear-noise bake follows, the same
 	 * for every seed */
