@@ -471,7 +471,9 @@ static void react_order1_noise(const struct peb_params *pp, double tr, double e,
 		neutralise1(kq, tr, h, q, &h1, &q1, &den, &xp);
 		double dh = dH[k] * e, dq = dQ[k], eps = noise_eps(h, q, dh, dq);
 		if (eps > 0) {
-			double hp = h + eps * dh, qp = q + eps * dq, h1p, q1p, denp, xpp;
+			/* perturbed before the clamps (a value below zero, a
+			 * diffusion undershoot, has no derivative) */
+			double hp = H[k] * e + eps * dh, qp = Q[k] + eps * dq, h1p, q1p, denp, xpp;
 			neutralise1(kq, tr, hp > 0 ? hp : 0, qp > 0 ? qp : 0, &h1p, &q1p, &denp, &xpp);
 			dH[k] = (h1p - h1) / eps * e;
 			dQ[k] = (q1p - q1) / eps;
