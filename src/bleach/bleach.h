@@ -192,7 +192,7 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 /* peb_run with the shot noise of the acid and the quencher at the start,
  * dh and dq (same shape as f, the noisy values less h0 and q0; NULL: no
  * noise), carried through the bake to first order (the linear-noise
- * bake, bleach(1)): m = exp(-kamp (A + dA)) with A the deterministic
+ * bake, bleach(1)): m = exp(-kamp max(A + dA, 0)) with A the deterministic
  * integral of h^p and dA its first-order change.  dh and dq are used as
  * scratch. */
 void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *dq, int nx,

@@ -666,9 +666,11 @@ void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *d
 	}
 	for (size_t k = 0; k < np; k++)
 		f[k] = exp(-pp->kamp * A[k]);
+	/* the integral of h^p is never below zero: where the first-order
+	 * noise would take it there (a large negative dA at low G0), m = 1 */
 	if (dA)
 		for (size_t k = 0; k < np; k++)
-			f[k] = exp(-pp->kamp * (A[k] + dA[k]));
+			f[k] = exp(-pp->kamp * (A[k] + dA[k] > 0 ? A[k] + dA[k] : 0));
 	free(pass.scratch);
 	free(Q);
 	free(A);

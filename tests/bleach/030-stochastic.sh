@@ -10,7 +10,7 @@
 #   - the ensemble mean: the window mean of M over 8 seeds is within 4
 #     standard errors (of the 8 seeds' spread) of the deterministic run's,
 #     without a quencher (the bake linear in the acid) and with quencher
-#     0.3 on 21 planes (the linear-noise bake of bleach(1): measured +0.75
+#     0.3 on 21 planes (the linear-noise bake of bleach(1): measured +0.30
 #     standard errors, where the nonlinear bake of the noisy fields gave
 #     -6.4);
 #   - a malformed stochastic statement or pag value: one line naming the
