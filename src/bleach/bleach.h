@@ -168,7 +168,7 @@ void bake_rows2(double *a, double *b, int nrows, int n, double d, double sigma);
 struct peb_params {
 	double q0, kamp, p, kloss, kq;  /* car: -, 1/s, -, 1/s, 1/s */
 	double t, dh, dq;               /* peb: s, um2/s, um2/s */
-	int noisy;                      /* 1: h0 may exceed 1 (shot noise), else clamped */
+	int noisy;                      /* 1: a stochastic run (its noise: peb_run_noise) */
 };
 /* The whole bake for peb_choose_steps' estimate: points of the grid,
  * seconds a point and step in closed form, the input for the refusal
@@ -189,10 +189,22 @@ double peb_react(const struct peb_params *pp, double tau, double *h, double *q);
  * (NULL or nx ny nz values): the acid at the end of the bake. */
 void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 	     double dx, double dy, double dz, int nouter, int ninner, double *hout);
-/* peb_run with the quencher at the start given point by point (q0, same
- * shape as f; NULL: pp->q0 everywhere). */
-void peb_run_field(const struct peb_params *pp, double *f, const double *q0, int nx, int ny,
-		   int nz, double dx, double dy, double dz, int nouter, int ninner, double *hout);
+/* peb_run with the shot noise of the acid and the quencher at the start,
+ * dh and dq (same shape as f, the noisy values less h0 and q0; NULL: no
+ * noise), carried through the bake to first order (the linear-noise
+ * bake, bleach(1)): m = exp(-kamp max(A + dA, 0)) with A the deterministic
+ * integral of h^p and dA its first-order change.  dh and dq are used as
+ * scratch. */
+void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *dq, int nx,
+		   int ny, int nz, double dx, double dy, double dz, int nouter, int ninner,
+		   double *hout);
+/* peb_xy.c: f (nz planes of nx * ny, periodic in x and y with the last
+ * node repeating the first) after diffusing D (um2/s) for t seconds in x
+ * and y, spacing hx, hy: each Fourier mode times e^{-D kappa^2 t}. */
+void peb_diffuse_xy(double *f, int nx, int ny, int nz, double hx, double hy, double D, double t);
+/* Periods (samples) up to this are applied as circulant matrices, not by
+ * FFT: a short FFT costs mostly its calls. */
+#define PEB_XY_CIRC_MAX 48
 /* The bake of ncol independent columns f[k * ncol + q] (no x-y
  * diffusion), in nsteps Strang steps. */
 void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz,
@@ -205,13 +217,15 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 #define PEB_TOL 1e-3
 #define PEB_MIN_STEPS 8
 #define PEB_MAX_STEPS 65536
-/* The x-y diffusion steps for n column steps: starting from n /
- * PEB_OUTER_START, doubled until m of the x-z and y-z slices through the
+/* The x-y diffusion steps for n column steps: n itself when both periods
+ * are at most PEB_XY_CIRC_MAX (an x-y step then costs about a column
+ * step, less than choosing fewer would); otherwise starting from kmin
+ * (0: n / PEB_OUTER_START), doubled until m of the x-z and y-z slices through the
  * steepest image edge changes by less than PEB_TOL; the doubled count
  * (at most n), the last change in *change. */
 int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
-		     double dx, double dy, double dz, int n, double *change);
-#define PEB_OUTER_START 64
+		     double dx, double dy, double dz, int n, int kmin, double *change);
+#define PEB_OUTER_START 16
 
 /* ---- shotnoise.c: photon and acid shot noise (bleach.5 stochastic) ---- */
 

@@ -207,18 +207,45 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 		    input, in->line_peb, n, change);
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
-	/* h, q, the m integral, and the noisy quencher of a stochastic run */
-	budget_check(input, what, (double)np * n * (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
-		     (double)np * (3 + in->stochastic) * sizeof(double));
+	/* h, q, the m integral, and for a stochastic run their noise, which
+	 * about doubles the work */
+	budget_check(input, what, (double)np * n * (1 + in->stochastic) *
+		     (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
+		     (double)np * (3 + 3 * in->stochastic) * sizeof(double));
 	double change_xy;
-	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, &change_xy);
+	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, 0, &change_xy);
+	/* x-y diffusion at every column step and still not converged: the
+	 * columns' count is too small for the x-y structure (a window of
+	 * lines on a 1 nm grid); doubled until the slices converge */
+	while (!(change_xy < PEB_TOL) && nouter == n && n < PEB_MAX_STEPS) {
+		n *= 2;
+		nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, n / 4, &change_xy);
+	}
+	if (!(change_xy < PEB_TOL))
+		die("%s:%ld: the bake did not converge in %d steps (m of the x-y slices still "
+		    "changes by %g)", input, in->line_peb, n, change_xy);
 	/* shot noise after the step choice: the counts are chosen for the
-	 * deterministic acid, the same for every seed */
-	double *q = in->stochastic ? shotnoise_report(in, M, nx, ny, nz, dx, dy, dz) : NULL;
-	peb_run_field(&pp, M, q, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
-	free(q);
+	 * deterministic acid, which the linear-noise bake follows, the same
+	 * for every seed */
+	double *dh = NULL, *dq = NULL;
+	if (in->stochastic) {
+		/* the noise as the drawn values less the deterministic ones */
+		dh = xreallocarray(NULL, np, sizeof *dh);
+		memcpy(dh, M, np * sizeof *dh);
+		dq = shotnoise_report(in, dh, nx, ny, nz, dx, dy, dz);
+		for (size_t k = 0; k < np; k++) {
+			dh[k] -= M[k];
+			if (dq)
+				dq[k] -= in->q0;
+		}
+		if (!dq)
+			dq = xcalloc(np, sizeof *dq);
+	}
+	peb_run_noise(&pp, M, dh, dq, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
+	free(dh);
+	free(dq);
 	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "
-		 "columns and slices within %.2g of the doubled counts", in->peb_time,
+		 "columns and slices within %.2g of converged (estimated)", in->peb_time,
 		 sqrt(2 * in->dacid * in->peb_time), n, nouter,
 		 change > change_xy ? change : change_xy);
 }

@@ -1,8 +1,9 @@
 /*
  * shotnoise.c - photon and acid shot noise of a chemically amplified
  * resist (bleach.5 stochastic): the exposure's photoacid 1 - M becomes a
- * count of molecules per voxel before the bake, which then runs as
- * before on the noisy fields.
+ * count of molecules per voxel before the bake, which carries the
+ * difference from the deterministic fields to first order
+ * (peb_run_noise).
  *
  * A voxel is one cell of the bake's grid, dx dy dz, holding n = G0 dx dy
  * dz PAG molecules on average (G0 the car statement's pag, per nm^3).
