@@ -198,6 +198,12 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *dq, int nx,
 		   int ny, int nz, double dx, double dy, double dz, int nouter, int ninner,
 		   double *hout);
+/* peb_run with the quencher at the start given point by point (q0, same
+ * shape as f, never NULL) and the acid h0 not clamped at one: the
+ * ordinary, nonlinear bake of the noisy fields (stochastic bake full,
+ * bleach(1)). */
+void peb_run_field(const struct peb_params *pp, double *f, const double *q0, int nx, int ny,
+		   int nz, double dx, double dy, double dz, int nouter, int ninner, double *hout);
 /* peb_xy.c: f (nz planes of nx * ny, periodic in x and y with the last
  * node repeating the first) after diffusing D (um2/s) for t seconds in x
  * and y, spacing hx, hy: each Fourier mode times e^{-D kappa^2 t}. */

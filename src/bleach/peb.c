@@ -613,9 +613,12 @@ void peb_run(const struct peb_params *pp, double *f, int nx, int ny, int nz,
 	peb_run_noise(pp, f, NULL, NULL, nx, ny, nz, dx, dy, dz, nouter, ninner, hout);
 }
 
-void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *dq, int nx,
-		   int ny, int nz, double dx, double dy, double dz, int nouter, int ninner,
-		   double *hout)
+/* The bake of peb_run_noise and peb_run_field: the quencher at the start
+ * q0 (NULL: pp->q0 everywhere), the first-order noise dh, dq (NULL:
+ * none). */
+static void run_bake(const struct peb_params *pp, double *f, const double *q0, double *dh,
+		     double *dq, int nx, int ny, int nz, double dx, double dy, double dz,
+		     int nouter, int ninner, double *hout)
 {
 	size_t ncol = (size_t)nx * (size_t)ny, np = ncol * (size_t)nz;
 	double *H = f;          /* h0 in, m out */
@@ -623,10 +626,12 @@ void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *d
 	double *A = xcalloc(np, sizeof *A);
 	double *dA = dh ? xcalloc(np, sizeof *dA) : NULL;
 	for (size_t k = 0; k < np; k++) {
-		Q[k] = pp->q0;
+		Q[k] = q0 ? q0[k] : pp->q0;
 		if (!(H[k] > 0))
 			H[k] = 0;
-		if (H[k] > 1)
+		/* a noisy acid (the drawn counts over the mean PAG count, the
+		 * full bake's input) may exceed one */
+		if (H[k] > 1 && !q0)
 			H[k] = 1;
 	}
 	int xy = (nx > 2 || ny > 2) && (pp->dh > 0 || pp->dq > 0);
@@ -675,6 +680,19 @@ void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *d
 	free(Q);
 	free(A);
 	free(dA);
+}
+
+void peb_run_noise(const struct peb_params *pp, double *f, double *dh, double *dq, int nx,
+		   int ny, int nz, double dx, double dy, double dz, int nouter, int ninner,
+		   double *hout)
+{
+	run_bake(pp, f, NULL, dh, dq, nx, ny, nz, dx, dy, dz, nouter, ninner, hout);
+}
+
+void peb_run_field(const struct peb_params *pp, double *f, const double *q0, int nx, int ny,
+		   int nz, double dx, double dy, double dz, int nouter, int ninner, double *hout)
+{
+	run_bake(pp, f, q0, NULL, NULL, nx, ny, nz, dx, dy, dz, nouter, ninner, hout);
 }
 
 void peb_columns(const struct peb_params *pp, double *f, size_t ncol, int nz, double dz, int nsteps)

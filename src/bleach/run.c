@@ -208,10 +208,11 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
 	/* h, q, the m integral, and for a stochastic run their noise, which
-	 * about doubles the work */
-	budget_check(input, what, (double)np * n * (1 + in->stochastic) *
+	 * about doubles the work (the full bake: the noisy quencher alone) */
+	int lin = in->stochastic && !in->bake_full;
+	budget_check(input, what, (double)np * n * (1 + lin) *
 		     (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
-		     (double)np * (3 + 3 * in->stochastic) * sizeof(double));
+		     (double)np * (3 + 3 * lin + in->bake_full) * sizeof(double));
 	double change_xy;
 	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, 0, &change_xy);
 	/* x-y diffusion at every column step and still not converged: the
@@ -228,20 +229,31 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 	 * deterministic acid, which the linear-noise bake follows, the same
 	 * for every seed */
 	double *dh = NULL, *dq = NULL;
-	if (in->stochastic) {
-		/* the noise as the drawn values less the deterministic ones */
-		dh = xreallocarray(NULL, np, sizeof *dh);
-		memcpy(dh, M, np * sizeof *dh);
-		dq = shotnoise_report(in, dh, nx, ny, nz, dx, dy, dz);
-		for (size_t k = 0; k < np; k++) {
-			dh[k] -= M[k];
-			if (dq)
-				dq[k] -= in->q0;
+	if (in->stochastic && in->bake_full) {
+		/* bake full: the ordinary bake of the noisy acid and quencher */
+		dq = shotnoise_report(in, M, nx, ny, nz, dx, dy, dz);
+		if (!dq) {
+			dq = xreallocarray(NULL, np, sizeof *dq);
+			for (size_t k = 0; k < np; k++)
+				dq[k] = in->q0;
 		}
-		if (!dq)
-			dq = xcalloc(np, sizeof *dq);
+		peb_run_field(&pp, M, dq, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
+	} else {
+		if (in->stochastic) {
+			/* the noise as the drawn values less the deterministic ones */
+			dh = xreallocarray(NULL, np, sizeof *dh);
+			memcpy(dh, M, np * sizeof *dh);
+			dq = shotnoise_report(in, dh, nx, ny, nz, dx, dy, dz);
+			for (size_t k = 0; k < np; k++) {
+				dh[k] -= M[k];
+				if (dq)
+					dq[k] -= in->q0;
+			}
+			if (!dq)
+				dq = xcalloc(np, sizeof *dq);
+		}
+		peb_run_noise(&pp, M, dh, dq, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
 	}
-	peb_run_noise(&pp, M, dh, dq, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
 	free(dh);
 	free(dq);
 	progress("peb: %g s, acid diffusion length %g um, %d steps (%d in x-y), m of sample "

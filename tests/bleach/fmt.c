@@ -3,7 +3,9 @@
  * file shipped in examples/resists/ parses, and write -> read -> write is
  * byte-identical with the values read back exactly (the writer prints
  * numbers to round-trip).  Also the defaults: ambient 1, standing waves
- * on, no bake, nz = 40 points a standing-wave period (at least 50).
+ * on, no bake, nz = 40 points a standing-wave period (at least 50); the
+ * stochastic statement's bake word: linear by default and not written
+ * (the files of before it stay byte for byte), full written and read back.
  */
 #include "fmt_bleach.h"
 
@@ -41,7 +43,8 @@ static void roundtrip(const char *path)
 	    a.dacid != b.dacid || a.dquench != b.dquench || a.peb_time != b.peb_time ||
 	    a.model != b.model || a.par[4] != b.par[4] || a.pag != b.pag ||
 	    a.stochastic != b.stochastic || a.seed != b.seed ||
-	    a.noise_photons != b.noise_photons || a.noise_acid != b.noise_acid) {
+	    a.noise_photons != b.noise_photons || a.noise_acid != b.noise_acid ||
+	    a.bake_full != b.bake_full) {
 		printf("FAIL round trip of %s\n", path);
 		failures++;
 	} else {
@@ -83,6 +86,27 @@ int main(void)
 		printf("FAIL defaults: ambient %g standing %d bake %d nz %d\n", in.ambient,
 		       in.standing, (int)in.bake, in.nz);
 		failures++;
+	}
+	/* stochastic bake: linear (0) unless full; full round-trips */
+	static const char *car = "wavelength 0.0135\n"
+		"resist thickness 0.040 index 0.97 dill 0.0 4.5 0.03\nsubstrate 0.999 0.0018\n"
+		"dose 30\ncar quencher 0.3 amplification 0.4 order 1 loss 0.002 quenching 5 "
+		"pag 0.3\npeb time 60 dacid 3e-7 dquencher 1e-7\ndevelop mack 0.1 0.0002 0.5 12\n";
+	static const char *word[] = {"", " bake linear", " bake FULL"};
+	for (int i = 0; i < 3; i++) {
+		char text[1024];
+		snprintf(text, sizeof text, "%sstochastic seed 5%s\n", car, word[i]);
+		fmt_bleach_parse("mem", text, &in);
+		fmt_bleach_write("c.in", &in);
+		struct bleach_input back;
+		fmt_bleach_read("c.in", &back);
+		int written = strstr(slurp("c.in"), " bake full\n") != NULL;
+		if (in.bake_full != (i == 2) || back.bake_full != in.bake_full || written != (i == 2)) {
+			printf("FAIL stochastic%s: bake_full %d, read back %d, written %d\n", word[i],
+			       in.bake_full, back.bake_full, written);
+			failures++;
+		}
+		remove("c.in");
 	}
 	return failures != 0;
 }

@@ -384,24 +384,34 @@ static void st_peb(struct parser *p, char **t, int nt)
 	in->line_peb = lex_lineno(p->lx);
 }
 
-/* stochastic seed S [photons on|off] [acid on|off] */
+/* stochastic seed S [photons on|off] [acid on|off] [bake linear|full] */
 static void st_stochastic(struct parser *p, char **t, int nt)
 {
 	struct bleach_input *in = p->in;
 	int got = 0;
 	in->noise_photons = in->noise_acid = 1;
+	in->bake_full = 0;
 	for (int i = 1; i < nt; i += 2) {
 		const char *kw = t[i], *v = i + 1 < nt ? t[i + 1] : NULL;
 		int bit = strcasecmp(kw, "seed") == 0 ? 1 : strcasecmp(kw, "photons") == 0 ? 2 :
-			  strcasecmp(kw, "acid") == 0 ? 4 : 0;
+			  strcasecmp(kw, "acid") == 0 ? 4 : strcasecmp(kw, "bake") == 0 ? 8 : 0;
 		if (!bit)
-			lex_error(p->lx, "stochastic: unknown word \"%.40s\" (expected seed, photons "
-				  "or acid)", kw);
+			lex_error(p->lx, "stochastic: unknown word \"%.40s\" (expected seed, photons, "
+				  "acid or bake)", kw);
 		if (got & bit)
 			lex_error(p->lx, "stochastic: %s given twice", kw);
 		got |= bit;
 		if (bit == 1) {
 			in->seed = count(p, v, "stochastic seed", 0, BLEACH_MAX_SEED);
+			continue;
+		}
+		if (bit == 8) {
+			if (!v)
+				lex_error(p->lx, "stochastic: bake: expected linear or full");
+			in->bake_full = strcasecmp(v, "full") == 0;
+			if (!in->bake_full && strcasecmp(v, "linear") != 0)
+				lex_error(p->lx, "stochastic: bake: expected linear or full, found "
+					  "\"%.40s\"", v);
 			continue;
 		}
 		if (!v)
@@ -700,8 +710,9 @@ void fmt_bleach_write(const char *path, const struct bleach_input *in)
 		fputc('\n', f);
 	}
 	if (in->stochastic)
-		fprintf(f, "stochastic seed %ld photons %s acid %s\n", in->seed,
-			in->noise_photons ? "on" : "off", in->noise_acid ? "on" : "off");
+		fprintf(f, "stochastic seed %ld photons %s acid %s%s\n", in->seed,
+			in->noise_photons ? "on" : "off", in->noise_acid ? "on" : "off",
+			in->bake_full ? " bake full" : "");
 	if (in->nx > 0)
 		fprintf(f, "grid nx %d ny %d nz %d\n", in->nx, in->ny, in->nz);
 	else

@@ -100,6 +100,8 @@ struct bleach_input {
 	int stochastic;             /* the stochastic statement is there */
 	long seed;                  /* 0 to BLEACH_MAX_SEED */
 	int noise_photons, noise_acid;
+	int bake_full;              /* bake full: the nonlinear bake of the noisy
+				     * fields (0: bake linear, the default) */
 	long line_stochastic;
 	int nx, ny, nz;             /* 0 for nx, ny: the contour-file's grid */
 	long line_nz;               /* line of the grid statement (0: default) */
