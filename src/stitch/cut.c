@@ -161,7 +161,8 @@ static void sort_layers(struct cutter *c)
 		while (j < c->nlayers && c->layers[j].after == l->after && c->layers[j].t == l->t &&
 		       c->layers[j].phase == l->phase)
 			j++;
-		qsort(c->layers + i, (size_t)(j - i), sizeof *c->layers, cmp_layer);
+		if (j - i > 1)
+			qsort(c->layers + i, (size_t)(j - i), sizeof *c->layers, cmp_layer);
 		i = j;
 	}
 }
@@ -183,7 +184,8 @@ static void write_tile(struct cutter *c, const char *path, long i0, long i1, lon
 			  (r > 0 && (m->rects[r].t != m->rects[r - 1].t ||
 				     m->rects[r].phase != m->rects[r - 1].phase));
 		if (brk) {
-			qsort(c->rects + run, (size_t)(c->nrects - run), sizeof *c->rects, cmp_rect);
+			if (c->nrects - run > 1)	/* qsort takes no null array */
+				qsort(c->rects + run, (size_t)(c->nrects - run), sizeof *c->rects, cmp_rect);
 			run = c->nrects;
 		}
 		for (; nl < m->nlayers && m->layers[nl].after == r; nl++)

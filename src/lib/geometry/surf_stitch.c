@@ -177,7 +177,8 @@ static int build_chains(const struct stitch_edge *e, int n, struct chain **out)
 		r[2 * i] = (struct vref){e[i].p, i, 0};
 		r[2 * i + 1] = (struct vref){e[i].q, i, 1};
 	}
-	qsort(r, 2 * (size_t)n, sizeof *r, cmp_vref);
+	if (n > 0)
+		qsort(r, 2 * (size_t)n, sizeof *r, cmp_vref);
 	int *vid = xreallocarray(NULL, 2 * (size_t)n, sizeof *vid);  /* per edge end */
 	int nv = 0;
 	for (int i = 0; i < 2 * n; i++) {
@@ -441,7 +442,8 @@ static void weld_plane(struct welder *w, const struct stitch_edge *e, size_t n)
 		int nc = build_chains(e + i, (int)(j - i), &c);
 		int s = e[i].side;
 		xgrow(&side[s], &cap[s], (size_t)ns[s] + (size_t)nc, sizeof *side[s]);
-		memcpy(side[s] + ns[s], c, (size_t)nc * sizeof *c);
+		if (nc > 0)
+			memcpy(side[s] + ns[s], c, (size_t)nc * sizeof *c);
 		ns[s] += nc;
 		free(c);
 		i = j;
@@ -466,7 +468,8 @@ static void close_corners(struct welder *w)
 {
 	double *e = w->ends;
 	size_t n = w->nends;
-	qsort(e, n, 6 * sizeof *e, cmp_end);
+	if (n > 1)	/* qsort takes no null array, even empty */
+		qsort(e, n, 6 * sizeof *e, cmp_end);
 	char *used = xcalloc(n ? n : 1, 1);
 	double *path = NULL;
 	size_t pcap = 0;
@@ -522,7 +525,8 @@ size_t stitch_weld(struct stitch *st, stitch_emit_fn *emit, void *ctx)
 {
 	struct welder w = {st, emit, ctx, 0, NULL, 0, 0};
 	st->unmatched = st->corners_open = 0;
-	qsort(st->e, st->n, sizeof *st->e, cmp_edge);
+	if (st->n > 1)
+		qsort(st->e, st->n, sizeof *st->e, cmp_edge);
 	for (size_t i = 0; i < st->n;) {
 		size_t j = i;
 		while (j < st->n && st->e[j].axis == st->e[i].axis && st->e[j].c == st->e[i].c)
