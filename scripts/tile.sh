@@ -46,6 +46,17 @@ tile_opt() {
 	esac
 }
 
+# tile_stitch_rule FILE FLAGS: the Makefile rule that stitches every tile's
+# FILE (keys.txt: key, shift and core of each tile) into FILE
+tile_stitch_rule() {
+	printf '%s:' "$1"
+	for k in $keys; do printf ' u/%s/%s' "$k" "$1"; done
+	printf '\n\t$(STITCH) %s-o %s' "$2" "$1"
+	while read -r k dx dy x0 x1 y0 y1; do
+		printf ' -t u/%s/%s %s %s %s %s %s %s' "$k" "$1" "$dx" "$dy" "$x0" "$x1" "$y0" "$y1"
+	done <"$tile_dir/keys.txt"
+	printf '\n'
+}
 tile_posnum() { awk -v v="$1" 'BEGIN { exit !(v + 0 == v && v > 0) }'; }
 
 # tile_check: the -tile options against the rest, before anything runs
@@ -109,19 +120,8 @@ tile_run() {
 			printf '\tcd u/%s && $(SPLAT) -q -method abbe tile.in && $(BLEACH) -q -o rval.3D.binary image.cont ../../resist.in && $(ETCH) $(ETCHOPTS) rval.3D.binary && rm -f rval.3D.binary\n' "$k"
 			printf 'u/%s/image.cont: u/%s/curves.plot\n' "$k" "$k"
 		done
-		printf 'curves.plot:'
-		for k in $keys; do printf ' u/%s/curves.plot' "$k"; done
-		printf '\n\t$(STITCH) -o curves.plot'
-		while read -r k dx dy x0 x1 y0 y1; do
-			printf ' -t u/%s/curves.plot %s %s %s %s %s %s' "$k" "$dx" "$dy" "$x0" "$x1" "$y0" "$y1"
-		done <"$tile_dir/keys.txt"
-		printf '\nimage.cont:'
-		for k in $keys; do printf ' u/%s/image.cont' "$k"; done
-		printf '\n\t$(STITCH) -image -o image.cont'
-		while read -r k dx dy x0 x1 y0 y1; do
-			printf ' -t u/%s/image.cont %s %s %s %s %s %s' "$k" "$dx" "$dy" "$x0" "$x1" "$y0" "$y1"
-		done <"$tile_dir/keys.txt"
-		printf '\n'
+		tile_stitch_rule curves.plot ""
+		tile_stitch_rule image.cont "-image "
 	} | tile_put "$tile_dir/Makefile"
 	if [ -n "$tile_slurm" ]; then
 		{
