@@ -402,30 +402,20 @@ int main(int argc, char **argv)
 		c.autorange = 0;
 	if (o.times && !c.section) {
 		/* -times: each page's title ends with its print time */
-		char *list = xstrdup(o.times), *save = NULL;
-		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-			c.times = xreallocarray(c.times, (size_t)c.ntimes + 1, sizeof *c.times);
-			if (!num_parse(t, &c.times[c.ntimes]))
-				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
-			c.ntimes++;
-		}
-		free(list);
+		c.ntimes = plot_parse_times(o.times, &c.times);
 	} else if (o.times && !c.t) {
 		/* -section -times: a legend of print times, a line type each */
 		c.t = xcalloc(1, sizeof *c.t);
-		char *list = xstrdup(o.times), *save = NULL;
-		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-			double tv;
-			if (!num_parse(t, &tv))
-				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
-			c.t->e = xreallocarray(c.t->e, (size_t)c.t->n + 1, sizeof *c.t->e);
+		double *tv;
+		int n = plot_parse_times(o.times, &tv);
+		c.t->e = xcalloc(n ? (size_t)n : 1, sizeof *c.t->e);
+		for (; c.t->n < n; c.t->n++) {
 			char f[NUM_BUFSZ], lab[64];
-			snprintf(lab, sizeof lab, "t = %s s", num_fmt(f, tv));
+			snprintf(lab, sizeof lab, "t = %s s", num_fmt(f, tv[c.t->n]));
 			c.t->e[c.t->n] = (struct template_entry){
 				1 + c.t->n % (DRAW_NLINETYPES - 1), 0, xstrdup(lab), 0};
-			c.t->n++;
 		}
-		free(list);
+		free(tv);
 		if (c.t->n == 0)
 			die_status(EXIT_USAGE, "-times: no time given");
 	}

@@ -924,17 +924,8 @@ int main(int argc, char **argv)
 	memcpy(c.win, o.win, sizeof c.win);
 	if ((c.walls || c.shade || c.raster) && !c.hidden)
 		die_status(EXIT_USAGE, "-walls, -shade, -raster and -vector go with a hidden-line plot: add -h");
-	if (o.times) {
-		/* a comma-separated list of times, one per page */
-		char *list = xstrdup(o.times), *save = NULL;
-		for (char *t = strtok_r(list, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-			c.times = xreallocarray(c.times, (size_t)c.ntimes + 1, sizeof *c.times);
-			if (!num_parse(t, &c.times[c.ntimes]))
-				die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
-			c.ntimes++;
-		}
-		free(list);
-	}
+	if (o.times)            /* one time per page */
+		c.ntimes = plot_parse_times(o.times, &c.times);
 	memcpy(c.v0, o.has_v ? o.v : DEFAULT_VIEW, sizeof c.v0);
 	memcpy(c.v, c.v0, sizeof c.v);
 

@@ -9,6 +9,7 @@
 #include "plot_common.h"
 #include "budget.h"
 #include "fmt_plot.h"
+#include "num.h"
 #include "util.h"
 
 #include <ctype.h>
@@ -344,4 +345,19 @@ void plot_settings_labels(struct plot_settings *s, const struct plot_labels *l,
 	file_label(&s->xlabel, l->axis[0], spec, val, "xlabel", c->xl);
 	file_label(&s->ylabel, l->axis[1], spec, val, "ylabel", c->yl);
 	file_label(&s->zlabel, l->axis[2], spec, val, "zlabel", c->zl);
+}
+
+int plot_parse_times(const char *list, double **times)
+{
+	char *copy = xstrdup(list), *save = NULL;
+	int n = 0;
+	*times = NULL;
+	for (char *t = strtok_r(copy, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+		*times = xreallocarray(*times, (size_t)n + 1, sizeof **times);
+		if (!num_parse(t, &(*times)[n]))
+			die_status(EXIT_USAGE, "-times: \"%.40s\" is not a number", t);
+		n++;
+	}
+	free(copy);
+	return n;
 }

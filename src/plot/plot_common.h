@@ -159,5 +159,8 @@ void plot_frame_draw(struct draw *d, const struct plot_frame *f, int grid,
 		     const char *top, const char *xl, const char *yl);
 /* The page of a picture: portrait 612x792 or landscape 792x612 points. */
 struct draw *plot_new_page(int landscape);
+/* The comma-separated list of -times as numbers in *times (allocated);
+ * returns their count, or dies (usage) on a word that is not a number. */
+int plot_parse_times(const char *list, double **times);
 
 #endif
