@@ -122,6 +122,20 @@ static void base64(FILE *f, const unsigned char *p, size_t n)
 	}
 }
 
+/* The x, y, width and height of the item's box (xy: x0 y0 x1 y1 from the
+ * page's bottom) as SVG attribute values, y from the top; opened by the
+ * caller's x=" and closed by its next quote. */
+static void rect_attrs(FILE *f, const struct draw_item *e, double yoff, double H)
+{
+	draw_print_coord(f, e->xy[0]);
+	fputs("\" y=\"", f);
+	draw_print_coord(f, yoff + H - e->xy[3]);
+	fputs("\" width=\"", f);
+	draw_print_coord(f, e->xy[2] - e->xy[0]);
+	fputs("\" height=\"", f);
+	draw_print_coord(f, e->xy[3] - e->xy[1]);
+}
+
 static void svg_image(FILE *f, const struct draw_item *e, double yoff, double H)
 {
 	size_t cols = (size_t)e->halign, rows = (size_t)e->valign;
@@ -161,13 +175,7 @@ static void svg_image(FILE *f, const struct draw_item *e, double yoff, double H)
 	at += png_chunk(png + at, "IDAT", zn);
 	at += png_chunk(png + at, "IEND", 0);
 	fputs("<image xmlns:xlink=\"http://www.w3.org/1999/xlink\" x=\"", f);
-	draw_print_coord(f, e->xy[0]);
-	fputs("\" y=\"", f);
-	draw_print_coord(f, yoff + H - e->xy[3]);
-	fputs("\" width=\"", f);
-	draw_print_coord(f, e->xy[2] - e->xy[0]);
-	fputs("\" height=\"", f);
-	draw_print_coord(f, e->xy[3] - e->xy[1]);
+	rect_attrs(f, e, yoff, H);
 	fputs("\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,", f);
 	base64(f, png, at);
 	fputs("\"/>\n", f);
@@ -247,13 +255,7 @@ void draw_write_svg(const struct draw *d, const char *path)
 				fputs("</g>\n", f);
 			clipid++;
 			fprintf(f, "<clipPath id=\"c%d\"><rect x=\"", clipid);
-			draw_print_coord(f, e->xy[0]);
-			fputs("\" y=\"", f);
-			draw_print_coord(f, yoff + H - e->xy[3]);
-			fputs("\" width=\"", f);
-			draw_print_coord(f, e->xy[2] - e->xy[0]);
-			fputs("\" height=\"", f);
-			draw_print_coord(f, e->xy[3] - e->xy[1]);
+			rect_attrs(f, e, yoff, H);
 			fprintf(f, "\"/></clipPath>\n<g clip-path=\"url(#c%d)\">\n", clipid);
 			inclip = 1;
 			break;
