@@ -665,11 +665,18 @@ points_done() {
 	echo $_n
 }
 # progress_loop: "fem: K/N points" on stderr whenever K changes (polled
-# each second while make runs in the foreground; killed after it), the
-# last K said kept in DIR/.progress.
+# each second while make runs in the foreground), the last K said kept in
+# DIR/.progress.  It runs while DIR/.progress-on exists (made before the
+# loop starts, never by it).  progress_stop removes that file, and kills
+# the loop only once the loop has made DIR/.progress-ready: a TERM that
+# reaches the new shell before it has dropped the traps it inherited from
+# this one is lost there (dash), and the loop then ran forever while fem
+# waited for it.  Unkilled, the loop sees the flag gone within a second.
 progress_loop() {
+	trap - INT TERM HUP
+	: >"$dir/.progress-ready"
 	last=-1
-	while :; do
+	while [ -e "$dir/.progress-on" ]; do
 		k=$(points_done)
 		[ "$k" = "$last" ] || { echo "$prog: $k/$npts points" >&2; echo "$k" >"$dir/.progress"; }
 		last=$k
@@ -678,7 +685,12 @@ progress_loop() {
 }
 progress_pid=""
 progress_stop() {
-	[ -z "$progress_pid" ] || { kill "$progress_pid" 2>/dev/null || :; wait "$progress_pid" 2>/dev/null || :; }
+	rm -f "$dir/.progress-on"
+	if [ -n "$progress_pid" ]; then
+		[ ! -e "$dir/.progress-ready" ] || kill "$progress_pid" 2>/dev/null || :
+		wait "$progress_pid" 2>/dev/null || :
+	fi
+	rm -f "$dir/.progress-ready"
 	progress_pid=""
 }
 # Interrupted (^C, kill): the finished points stay (make wrote each
@@ -695,7 +707,7 @@ say "$dir: $npts points ($nf foci x $nd doses), make -j $jobs"
 # the CDs' discretisation error is not estimated unless asked: say so
 [ -n "$accuracy" ] ||
 	say "the CDs' discretisation error is not estimated: -accuracy check estimates it (one coarser solve a point), -accuracy 1 bounds it"
-[ -n "$quiet" ] || { progress_loop & progress_pid=$!; }
+[ -n "$quiet" ] || { : >"$dir/.progress-on"; progress_loop & progress_pid=$!; }
 st=0
 make -k -s -C "$dir" --no-print-directory -j "$jobs" all || st=$?
 progress_stop

@@ -20,8 +20,10 @@ for b in block[2-9].sh; do
 	sed -e "s|/tmp/sample3d|$PWD/sample3d|g" -e "s|B=\$T/build/bin|B=$BUILD/bin|" "$b" >one.sh
 	cat one.sh one.sh >twice.sh
 	here=$PWD
-	(cd "$TOP" && unset T && PATH=/usr/bin:/bin sh -e "$here/twice.sh") >out.txt 2>&1 ||
-		fail "$b failed: $(tail -n 5 out.txt)"
+	# bounded here (the runner's bound would kill this test with its
+	# log empty), so that a hang says where it was
+	(cd "$TOP" && unset T && PATH=/usr/bin:/bin exec timeout 400 sh -e "$here/twice.sh") >out.txt 2>&1 ||
+		fail "$b failed (exit $?; 124: still running after 400 s): $(tail -n 5 out.txt)"
 done
 for f in image.cont rval.3D.binary curves.plot profile.ps cut.ps image.ps profile.plot profile2D.ps dataplot.ps \
 	fem/fem.dat fem/bossung.ps fem/window.ps; do
