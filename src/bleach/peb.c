@@ -303,15 +303,16 @@ static void tridiag_init(struct tridiag *t, int n, double s, double *buf)
 	}
 }
 
-/* x[j * b + i] for the b columns i: solves (I - c Lap) x = r in place. */
-static void tridiag_solve(const struct tridiag *t, int n, size_t b, double *x)
+/* x[j * ld + i] for the b columns i (rows ld apart): solves (I - c Lap)
+ * x = r in place. */
+static void tridiag_solve(const struct tridiag *t, int n, size_t b, size_t ld, double *x)
 {
 	double s = t->s;
 	for (int j = 0; j < n; j++) {
-		double *xj = x + (size_t)j * b;
+		double *xj = x + (size_t)j * ld;
 		double sub = j == 0 ? 0 : (j == n - 1 ? -2 * s : -s);
 		if (j > 0) {
-			const double *xp = xj - b;
+			const double *xp = xj - ld;
 			for (size_t i = 0; i < b; i++)
 				xj[i] = (xj[i] - sub * xp[i]) * t->inv[j];
 		} else {
@@ -320,17 +321,18 @@ static void tridiag_solve(const struct tridiag *t, int n, size_t b, double *x)
 		}
 	}
 	for (int j = n - 2; j >= 0; j--) {
-		double *xj = x + (size_t)j * b;
-		const double *xn = xj + b;
+		double *xj = x + (size_t)j * ld;
+		const double *xn = xj + ld;
 		double u = t->up[j];
 		for (size_t i = 0; i < b; i++)
 			xj[i] -= u * xn[i];
 	}
 }
 
-/* One TR-BDF2 step of u' = D Lap u for the b columns of u[j * b + i],
- * with the factors of the two stages (c1 = g tau / 2, c2 = (1-g)/(2-g)
- * tau); y and w are scratch of the same size. */
+/* One TR-BDF2 step of u' = D Lap u for the b columns of u[j * ld + i]
+ * (in place in the whole field: rows ld apart), with the factors of the
+ * two stages (c1 = g tau / 2, c2 = (1-g)/(2-g) tau); y is scratch of n
+ * rows of b. */
 struct zstep {
 	int on;                 /* 0: D = 0, nothing to do */
 	double s1;              /* g tau D / (2 dz^2), the explicit half */
@@ -352,28 +354,31 @@ static void zstep_init(struct zstep *z, int n, double D, double dz, double tau, 
 	tridiag_init(&z->b, n, (1 - TRB_G) / (2 - TRB_G) * tau * k, buf + 2 * (size_t)n);
 }
 
-static void zstep_apply(const struct zstep *z, int n, size_t b, double *u, double *y)
+static void zstep_apply(const struct zstep *z, int n, size_t b, size_t ld, double *u, double *y)
 {
 	if (!z->on)
 		return;
 	double s = z->s1;
 	/* stage 1, trapezoid over g tau: y = (I + s Lap) u, then solved */
 	for (int j = 0; j < n; j++) {
-		const double *uj = u + (size_t)j * b;
-		const double *um = j > 0 ? uj - b : uj + b;     /* mirrored ghost */
-		const double *up = j < n - 1 ? uj + b : uj - b;
+		const double *uj = u + (size_t)j * ld;
+		const double *um = j > 0 ? uj - ld : uj + ld;   /* mirrored ghost */
+		const double *up = j < n - 1 ? uj + ld : uj - ld;
 		double *yj = y + (size_t)j * b;
 		for (size_t i = 0; i < b; i++)
 			yj[i] = uj[i] + s * (um[i] - 2 * uj[i] + up[i]);
 	}
-	tridiag_solve(&z->a, n, b, y);
+	tridiag_solve(&z->a, n, b, b, y);
 	/* stage 2, BDF2 through u, y and the new u */
 	double c1 = 1 / (TRB_G * (2 - TRB_G));
 	double c0 = (1 - TRB_G) * (1 - TRB_G) * c1;
-	size_t nb = (size_t)n * b;
-	for (size_t k = 0; k < nb; k++)
-		u[k] = c1 * y[k] - c0 * u[k];
-	tridiag_solve(&z->b, n, b, u);
+	for (int j = 0; j < n; j++) {
+		double *uj = u + (size_t)j * ld;
+		const double *yj = y + (size_t)j * b;
+		for (size_t i = 0; i < b; i++)
+			uj[i] = c1 * yj[i] - c0 * uj[i];
+	}
+	tridiag_solve(&z->b, n, b, ld, u);
 }
 
 /* ---- the column integration (z diffusion and reaction) ---- */
@@ -404,19 +409,66 @@ static double peb_node(double T, int n, int i)
  * into P, so that a point costs one expm1 and one division a step and a
  * logarithm a pass instead of expm1, log1p and two divisions (P is folded
  * into A before it could overflow). */
+/* 2^{-j/64} and 1 - 2^{-j/64}, j < 64, for one_minus_exp (set by
+ * exp_tables_init before any worker starts; the same values each time). */
+static double exp_t[64], exp_c[64];
+
+static void exp_tables_init(void)
+{
+	for (int j = 0; j < 64; j++) {
+		exp_t[j] = exp2(-j / 64.0);
+		exp_c[j] = -expm1(-j * M_LN2 / 64);
+	}
+}
+
+/* 1 - e^{-u} for u >= 0 to its own relative precision (it is over a for
+ * small u), inline and without a call, so that the divisions of
+ * consecutive points overlap (the call of expm1 and the division waiting
+ * on it, one point at a time, were most of the reaction's time): u = (64 k
+ * + j) ln 2 / 64 + r, |r| <= ln 2 / 128, e^{-u} = 2^-k t_j e^{-r} with t_j
+ * = 2^{-j/64} from the table, e^{-r} - 1 by its Taylor series to r^6 / 6!
+ * (the remainder below 6e-18 of it).  1 - e^{-u} = (1 - 2^-k t_j) - 2^-k
+ * t_j (e^{-r} - 1), the first term from the table when k = 0, so that it
+ * is exact to rounding for small u too; its two terms cancel by at most
+ * half.  u beyond 700 is taken as 700 (e^{-700} = 1e-304 is below
+ * anything it is added to). */
+static inline double one_minus_exp(double u)
+{
+	/* ln 2 / 64 in two parts, the first with its low 32 bits zero so
+	 * that n times it is exact for any n here (n < 2^17) */
+	static const double L_HI = 6.93147180369123816490e-01 / 64,
+		L_LO = 1.90821492927058770002e-10 / 64, INV_L = 64 / M_LN2;
+	u = u < 700 ? u : 700;
+	int n = (int)(u * INV_L + 0.5), j = n & 63, k = n >> 6;
+	double r = (u - n * L_HI) - n * L_LO;
+	double p = r * (-1 + r * (1.0 / 2 + r * (-1.0 / 6 + r * (1.0 / 24 + r * (-1.0 / 120 +
+									  r * (1.0 / 720))))));
+	union {
+		double d;
+		unsigned long long i;
+	} sc = {.i = (unsigned long long)(1023 - k) << 52};
+	double e = sc.d * exp_t[j];
+	double base = k == 0 ? exp_c[j] : 1 - e;
+	return base - e * p;
+}
+
 /* One point of react_order1: h1, q1, den and max(kq d tr, 0) from h >= 0
- * (the loss applied) and q >= 0. */
+ * (the loss applied) and q >= 0.  rho = em / |a| is kept as the quotient
+ * (w / ad) so that den = (s ad + kq h w) / ad and h1 = h num ad / (s ad +
+ * kq h w) take two divisions that do not wait on each other. */
 static inline void neutralise1(double kq, double tr, double h, double q, double *h1,
 			       double *q1, double *den, double *xp)
 {
 	double d = h - q, a = kq * d, x = a * tr, u = x > 0 ? x : -x;
-	/* 1 - e^{-u} to its own precision (it is over a for small u),
-	 * e^{-u} from it to 1e-16 absolute, all that is used of it */
-	double em = -expm1(-u), E = 1 - em;
-	double rho = u > 1e-12 ? em / (a > 0 ? a : -a) : tr;
+	/* 1 - e^{-u} to its own precision, e^{-u} from it to 1e-16
+	 * absolute, all that is used of it */
+	double em = one_minus_exp(u), E = 1 - em;
+	int tiny = !(u > 1e-12);        /* rho = tr as d -> 0 */
+	double ad = tiny ? 1 : (a > 0 ? a : -a), w = tiny ? tr : em;
 	double s = x >= 0 ? E : 1, num = x >= 0 ? 1 : E;
-	*den = s + kq * h * rho;
-	*h1 = h * num / *den;
+	double D = s * ad + kq * h * w, iad = 1 / ad, iD = 1 / D;
+	*den = D * iad;
+	*h1 = h * num * ad * iD;
 	*q1 = *h1 - d > 0 ? *h1 - d : 0;
 	*xp = x > 0 ? x : 0;
 }
@@ -518,10 +570,12 @@ static void zops_set(struct zops *o, const struct peb_params *pp, int nz, double
 	zstep_init(&o->q, nz, pp->dq, dz, dt, o->buf + ZSTEP_BUF(nz));
 }
 
-/* A block's arrays ([j * b + i] for its b columns): acid, quencher, the
- * integral of h^p, and their noise (NULL without); y and P scratch. */
+/* A block's arrays, in place in the whole field ([j * ld + i] for its b
+ * columns, ld the field's columns): acid, quencher, the integral of h^p,
+ * and their noise (NULL without); y and P scratch of nz rows of b. */
 struct block {
 	double *H, *Q, *A, *dH, *dQ, *dA, *y, *P;
+	size_t ld;
 };
 
 /* The inner steps i0 .. i1 - 1 (of n over T, peb_node) on the b columns
@@ -532,7 +586,7 @@ struct block {
 static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, size_t b,
 			  const struct block *k, double T, int n, int i0, int i1, double dz)
 {
-	size_t nb = (size_t)nz * b;
+	size_t nb = (size_t)nz * b, ld = k->ld;
 	int fast = pp->p == 1 && pp->kq > 0;
 	if (fast)
 		for (size_t j = 0; j < nb; j++)
@@ -542,32 +596,38 @@ static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, s
 		double next = i < i1 ? peb_node(T, n, i + 1) - peb_node(T, n, i) : 0;
 		double tr = 0.5 * (prev + next);
 		double e = exp(-pp->kloss * 0.5 * tr);
-		if (fast && k->dH)
-			react_order1_noise(pp, tr, e, nb, k->H, k->Q, k->A, k->P, k->dH, k->dQ, k->dA);
-		else if (fast)
-			react_order1(pp, tr, e, nb, k->H, k->Q, k->A, k->P);
-		else if (k->dH)
-			react_noise(pp, tr, e, nb, k->H, k->Q, k->A, k->dH, k->dQ, k->dA);
-		else
-			for (size_t j = 0; j < nb; j++)
-				k->A[j] += react(pp, tr, e, &k->H[j], &k->Q[j]);
+		for (int z = 0; z < nz; z++) {
+			size_t r = (size_t)z * ld;
+			double *H = k->H + r, *Q = k->Q + r, *A = k->A + r, *P = k->P + (size_t)z * b;
+			if (fast && k->dH)
+				react_order1_noise(pp, tr, e, b, H, Q, A, P, k->dH + r, k->dQ + r, k->dA + r);
+			else if (fast)
+				react_order1(pp, tr, e, b, H, Q, A, P);
+			else if (k->dH)
+				react_noise(pp, tr, e, b, H, Q, A, k->dH + r, k->dQ + r, k->dA + r);
+			else
+				for (size_t j = 0; j < b; j++)
+					A[j] += react(pp, tr, e, &H[j], &Q[j]);
+		}
 		if (i < i1) {
 			zops_set(o, pp, nz, dz, next);
-			zstep_apply(&o->h, nz, b, k->H, k->y);
-			zstep_apply(&o->q, nz, b, k->Q, k->y);
+			zstep_apply(&o->h, nz, b, ld, k->H, k->y);
+			zstep_apply(&o->q, nz, b, ld, k->Q, k->y);
 			if (k->dH) {
-				zstep_apply(&o->h, nz, b, k->dH, k->y);
-				zstep_apply(&o->q, nz, b, k->dQ, k->y);
+				zstep_apply(&o->h, nz, b, ld, k->dH, k->y);
+				zstep_apply(&o->q, nz, b, ld, k->dQ, k->y);
 			}
 		}
 		prev = next;
 	}
 	if (fast)
-		for (size_t j = 0; j < nb; j++)
-			k->A[j] += log(k->P[j]) / pp->kq;
+		for (int z = 0; z < nz; z++)
+			for (size_t j = 0; j < b; j++)
+				k->A[(size_t)z * ld + j] += log(k->P[(size_t)z * b + j]) / pp->kq;
 }
 
-/* Columns per block: the block's H, Q, A and scratch stay in cache. */
+/* Columns per block: the block's rows of H, Q, A (PEB_BLOCK values
+ * each, contiguous in the field) and its scratch stay in cache. */
 #define PEB_BLOCK 32
 
 struct peb_pass {
@@ -580,30 +640,26 @@ struct peb_pass {
 	double *scratch;        /* per worker: PASS_SCRATCH(nz) */
 };
 
-#define PASS_SCRATCH(nz) ((size_t)(nz) * (8 * PEB_BLOCK + 2 * ZSTEP_BUF(1)))
+#define PASS_SCRATCH(nz) ((size_t)(nz) * (2 * PEB_BLOCK + 2 * ZSTEP_BUF(1)))
 
+/* The blocks lo .. hi - 1 in place: a block's columns are PEB_BLOCK
+ * consecutive values of every plane, so they are worked on where they
+ * are (a copy to and from a packed block cost as much as the z steps). */
 static void pass_blocks(void *ctx, size_t lo, size_t hi, int worker)
 {
 	struct peb_pass *p = ctx;
 	int nz = p->nz;
 	size_t per = (size_t)nz * PEB_BLOCK;
-	double *w = p->scratch + (size_t)worker * PASS_SCRATCH(nz), *v[6];
-	for (int a = 0; a < 6; a++)
-		v[a] = a < p->nf ? w + (size_t)a * per : NULL;
-	struct block k = {v[0], v[1], v[2], v[3], v[4], v[5], w + 6 * per, w + 7 * per};
-	struct zops o = {.buf = w + 8 * per};
+	double *w = p->scratch + (size_t)worker * PASS_SCRATCH(nz);
+	struct zops o = {.buf = w + 2 * per};
 	for (size_t blk = lo; blk < hi; blk++) {
 		size_t q0 = blk * PEB_BLOCK;
 		size_t b = p->ncol - q0 < PEB_BLOCK ? p->ncol - q0 : PEB_BLOCK;
-		for (int j = 0; j < nz; j++)
-			for (int a = 0; a < p->nf; a++)
-				memcpy(v[a] + (size_t)j * b, p->f[a] + (size_t)j * p->ncol + q0,
-				       b * sizeof(double));
+		double *v[6];
+		for (int a = 0; a < 6; a++)
+			v[a] = a < p->nf ? p->f[a] + q0 : NULL;
+		struct block k = {v[0], v[1], v[2], v[3], v[4], v[5], w, w + per, p->ncol};
 		columns_steps(p->pp, &o, nz, b, &k, p->pp->t, p->n, p->i0, p->i1, p->dz);
-		for (int j = 0; j < nz; j++)
-			for (int a = 0; a < p->nf; a++)
-				memcpy(p->f[a] + (size_t)j * p->ncol + q0, v[a] + (size_t)j * b,
-				       b * sizeof(double));
 	}
 }
 
@@ -643,6 +699,7 @@ static void run_bake(const struct peb_params *pp, double *f, const double *q0, d
 	int n = nouter * ninner;
 	double T = pp->t, prev = 0;
 	size_t nblk = (ncol + PEB_BLOCK - 1) / PEB_BLOCK;
+	exp_tables_init();
 	struct peb_pass pass = {pp, {H, Q, A, dh, dq, dA}, dh ? 6 : 3, ncol, nz, n, 0, 0, dz,
 				xreallocarray(NULL, (size_t)par_threads(), PASS_SCRATCH(nz) * sizeof(double))};
 	if (T > 0) {
