@@ -20,7 +20,7 @@
 # bake minute, and the largest difference of m between the two (each
 # within its own estimate of 1e-3 of a converged bake; the stochastic
 # examples/euv-* bakes are not: their noise makes m at the chosen steps
-# differ from a 512-step bake by 0.01-0.02, bleach(5)).  The cases: a clear-field
+# differ from a 256-step bake by 0.01-0.03, bleach(1)).  The cases: a clear-field
 # column 3 x 3 x 401 and a 0.6 um-pitch line image 61 x 61 x 201 (401 bake
 # nodes), examples/car-krf-lines' resist at orders 2 and 1, with and
 # without quencher (the clear column runs within /usr/bin/time's 0.01 s
