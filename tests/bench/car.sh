@@ -10,19 +10,21 @@
 # time is the figure); prints the step count bleach chose.
 # Then the bake's cliff cases and the examples with a CA resist, each with
 # this tree's bleach and with the base revision's (CAR_BASE, default
-# ed01cc5: main before the graded steps, the one-exponential order-1
-# reaction, the circulant x-y step and the linear-noise bake) exported
-# with git archive and built in a temporary directory, in the same run:
-# CPU seconds old and new, seconds per million bake points per bake
-# minute, and the largest difference of m between the two (each within
-# its own estimate of 1e-3 of a converged bake; the old one's estimate
-# of the examples/euv-* bakes was not, and the stochastic ones differ by
-# their noise model).  The cases: a clear-field
+# 5ab1070: main before the column steps in place, the inline exponential
+# of the order-1 neutralisation, one reaction a step with x-y diffusion
+# every step and the register-blocked circulant x-y products; ed01cc5,
+# before the graded steps, the one-exponential order-1 reaction, the
+# circulant x-y step and the linear-noise bake, shows the rounds before)
+# exported with git archive and built in a temporary directory, in the
+# same run: CPU seconds old and new, seconds per million bake points per
+# bake minute, and the largest difference of m between the two (each
+# within its own estimate of 1e-3 of a converged bake; the stochastic
+# examples/euv-* bakes are not: their noise makes m at the chosen steps
+# differ from a 256-step bake by 0.01-0.03, bleach(1)).  The cases: a clear-field
 # column 3 x 3 x 401 and a 0.6 um-pitch line image 61 x 61 x 201 (401 bake
 # nodes), examples/car-krf-lines' resist at orders 2 and 1, with and
 # without quencher (the clear column runs within /usr/bin/time's 0.01 s
-# resolution: its per-point figure is noise).  The old order-2 line runs
-# take minutes.  Asserts nothing.
+# resolution: its per-point figure is noise).  Asserts nothing.
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
@@ -56,7 +58,7 @@ else
 	exit 0
 fi
 
-BASE=${CAR_BASE:-ed01cc5}
+BASE=${CAR_BASE:-5ab1070}
 old=
 if git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
 	mkdir -p base

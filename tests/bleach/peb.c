@@ -18,7 +18,10 @@
  *     collocation, classical RK4 in time on the unsplit equations; for a
  *     clear-field column with standing waves and for an x-z slice under a
  *     line/space image, m within 1e-4 (peb.c on a z grid 8 times finer,
- *     compared at the common nodes);
+ *     compared at the common nodes); the slice both with x-y diffusion
+ *     nested outside groups of column steps and with it at every step
+ *     (peb.c's other ordering: x-y and z diffusion of a step together
+ *     between the reactions at its ends);
  *   - the standing-wave ripple of the m = 0.5 wall under a line/space
  *     image shrinks as Dh grows;
  *   - the linear-noise bake (shot noise carried to first order) against
@@ -368,6 +371,8 @@ static double acid0(double x, double L, double z)
 	return 1 - exp(-1.6 * img * sw);
 }
 
+/* slice 0: a clear-field column; 1: an x-z slice with x-y diffusion
+ * every 4 column steps (nested); 2: the slice with it at every step. */
 static void independent(int slice)
 {
 	const double T = 0.21, L = slice ? 0.36 : 0;
@@ -390,7 +395,9 @@ static void independent(int slice)
 	for (int k = 0; k < nzf; k++)
 		for (int i = 0; i < nx; i++)
 			f[(size_t)k * nx + i] = acid0(L * i / px, L, T * k / (nzf - 1));
-	if (slice)
+	if (slice == 2)
+		peb_run(&pp, f, nx, ny, nzf, L / px, 1, T / (nzf - 1), 512, 1, NULL);
+	else if (slice)
 		peb_run(&pp, f, nx, ny, nzf, L / px, 1, T / (nzf - 1), 128, 4, NULL);
 	else
 		peb_columns(&pp, f, 1, nzf, T / (nzf - 1), 512);
@@ -401,7 +408,8 @@ static void independent(int slice)
 			if (r > e)
 				e = r;
 		}
-	check(slice ? "x-z slice under lines and spaces: m vs method of lines"
+	check(slice == 2 ? "x-z slice, x-y diffusion every step: m vs method of lines"
+		    : slice ? "x-z slice under lines and spaces: m vs method of lines"
 		    : "clear-field column with standing waves: m vs method of lines", e, 1e-4);
 	free(Dz); free(Dx); free(h0); free(mref); free(f);
 }
@@ -494,6 +502,7 @@ int main(void)
 	diffusion();
 	independent(0);
 	independent(1);
+	independent(2);
 	linear_noise(1);
 	linear_noise(2);
 	double r1 = ripple(1e-6), r2 = ripple(5e-6), r3 = ripple(2e-5);
