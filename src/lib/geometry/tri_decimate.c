@@ -35,6 +35,12 @@
 
 struct cand;
 
+struct star_tri {
+	int tv[3];
+	double n[3];            /* twice the area vector */
+	double q;               /* quality */
+};
+
 struct dmesh {
 	size_t nv, nt;
 	double *p;              /* 3 per vertex */
@@ -66,6 +72,11 @@ struct dmesh {
 				 * consider(u, 0) would give now */
 	int *ring, *ring2;
 	size_t cring, cring2;
+	struct star_tri *stri;  /* star_prep's: the star of su */
+	size_t nstri, cstri, snu;
+	int su, sring;          /* sring: snu and umark are su's */
+	unsigned *umark;        /* per vertex: ustamp if a neighbour of su */
+	unsigned ustamp;
 };
 
 enum { F_LOCKED = 1, F_BOUNDARY = 2, F_DEAD = 4 };
@@ -178,14 +189,22 @@ static void q_add_plane(double *q, const double *n, const double *p)
 			q[k++] += e[i] * e[j];
 }
 
-/* (qa + qb)(p): the sum of squared distances of p to their planes */
+/* (qa + qb)(p): the sum of squared distances of p to their planes, the
+ * terms of e^T Q e (e = p, 1) in the order aa ab ac ad bb bc bd cc cd dd,
+ * written out (the hot loop of consider: a neighbour's cost) */
 static double q_eval(const double *qa, const double *qb, const double *p)
 {
-	double e[4] = {p[0], p[1], p[2], 1}, s = 0;
-	int k = 0;
-	for (int i = 0; i < 4; i++)
-		for (int j = i; j < 4; j++, k++)
-			s += (i == j ? 1 : 2) * (qa[k] + qb[k]) * e[i] * e[j];
+	double x = p[0], y = p[1], z = p[2], s = 0;
+	s += (qa[0] + qb[0]) * x * x;
+	s += 2 * (qa[1] + qb[1]) * x * y;
+	s += 2 * (qa[2] + qb[2]) * x * z;
+	s += 2 * (qa[3] + qb[3]) * x;
+	s += (qa[4] + qb[4]) * y * y;
+	s += 2 * (qa[5] + qb[5]) * y * z;
+	s += 2 * (qa[6] + qb[6]) * y;
+	s += (qa[7] + qb[7]) * z * z;
+	s += 2 * (qa[8] + qb[8]) * z;
+	s += qa[9] + qb[9];
 	return s > 0 ? s : 0;
 }
 
@@ -213,7 +232,8 @@ static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 				m->mark[w] = m->stamp;
 				if (count)
 					m->cnt[w] = 0;
-				xgrow(r, cap, k + 1, sizeof **r);
+				if (k + 1 > *cap)
+					xgrow(r, cap, k + 1, sizeof **r);
 				(*r)[k++] = w;
 			}
 			if (count)
@@ -231,22 +251,6 @@ static size_t ring_of(struct dmesh *m, int x, int **r, size_t *cap)
 static size_t ring_cnt(struct dmesh *m, int x, int **r, size_t *cap)
 {
 	return ring(m, x, r, cap, 1);
-}
-
-/* the live triangles holding both u and v, and their third vertices */
-static int shared(const struct dmesh *m, int u, int v, int opp[2])
-{
-	int k = 0;
-	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
-		long t = c / 3;
-		const int *tv = m->tv + 3 * t;
-		if (tv[0] < 0 || (tv[0] != v && tv[1] != v && tv[2] != v))
-			continue;
-		if (k < 2)
-			opp[k] = tv[0] + tv[1] + tv[2] - u - v;
-		k++;
-	}
-	return k;
 }
 
 /* the checks of the heap's order: the box, the boundary (ns: the
@@ -267,61 +271,98 @@ static int valid_cheap(const struct dmesh *m, int u, int v, int ns, double *cost
 	return 1;
 }
 
+/* u's star as valid_star reads it, computed once for all the collapses
+ * of u weighed together: u's live triangles in corner-list order (their
+ * vertices, twice the area vector and the quality as they are now), and
+ * (when valid first needs them) u's distinct neighbours marked in m->umark */
+static void star_prep(struct dmesh *m, int u)
+{
+	m->su = u;
+	m->sring = 0;
+	size_t n = 0;
+	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
+		const int *tv = m->tv + 3 * (c / 3);
+		if (tv[0] < 0)
+			continue;
+		if (n + 1 > m->cstri)
+			xgrow(&m->stri, &m->cstri, n + 1, sizeof *m->stri);
+		struct star_tri *st = &m->stri[n++];
+		memcpy(st->tv, tv, sizeof st->tv);
+		const double *a0 = m->p + 3 * (size_t)tv[0], *a1 = m->p + 3 * (size_t)tv[1],
+			     *a2 = m->p + 3 * (size_t)tv[2];
+		normal(a0, a1, a2, st->n);
+		st->q = -1;     /* not yet computed */
+	}
+	m->nstri = n;
+}
+
 /* whether moving u onto v flips none of u's other triangles and makes
- * none thinner than TRI_DECIMATE_QMIN that was not thinner already */
-static int shape_ok(const struct dmesh *m, int u, int v)
+ * none thinner than TRI_DECIMATE_QMIN that was not thinner already
+ * (after star_prep(m, u)) */
+static int shape_ok(struct dmesh *m, int u, int v)
 {
 	const double *pv = m->p + 3 * (size_t)v;
-	for (long c2 = m->head[u]; c2 >= 0; c2 = m->next[c2]) {
-		long t = c2 / 3;
-		const int *tv = m->tv + 3 * t;
-		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
+	for (size_t k = 0; k < m->nstri; k++) {
+		struct star_tri *st = &m->stri[k];
+		const int *tv = st->tv;
+		if (tv[0] == v || tv[1] == v || tv[2] == v)
 			continue;
-		const double *a[3], *b[3];
-		for (int s = 0; s < 3; s++) {
-			a[s] = m->p + 3 * (size_t)tv[s];
-			b[s] = tv[s] == u ? pv : a[s];
-		}
-		double n0[3], n1[3];
-		normal(a[0], a[1], a[2], n0);
+		const double *b[3];
+		for (int s = 0; s < 3; s++)
+			b[s] = tv[s] == u ? pv : m->p + 3 * (size_t)tv[s];
+		double n1[3];
 		normal(b[0], b[1], b[2], n1);
-		if (!(vec3_dot(n0, n1) > 0))
+		if (!(vec3_dot(st->n, n1) > 0))
 			return 0;
 		double q1 = quality(b[0], b[1], b[2]);
-		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
+		if (q1 >= TRI_DECIMATE_QMIN)
+			continue;
+		if (st->q < 0)
+			st->q = quality(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1],
+					m->p + 3 * (size_t)tv[2]);
+		if (q1 < st->q)
 			return 0;
 	}
 	return 1;
 }
 
-/* whether collapsing u onto v is allowed, its cost in *cost; without
- * full only the box, the boundary and the cost are checked (the heap's
- * order), with full the topology, orientation and shape too (the
- * input vertices and samples are points_ok's) */
-static int valid(struct dmesh *m, int u, int v, double *cost, int full)
+/* whether collapsing u onto v is allowed (after star_prep(m, u)), its
+ * cost in *cost: the box, the boundary and the cost (the heap's order;
+ * with cheap, already found to pass by consider, at cost *cost), then
+ * the orientation, shape and topology (the input vertices and samples
+ * are points_ok's) */
+static int valid(struct dmesh *m, int u, int v, double *cost, int cheap)
 {
-	int opp[2];
-	int ns = shared(m, u, v, opp);
-	double c;
-	if (!valid_cheap(m, u, v, ns, &c))
+	/* the triangles holding u and v, and their third vertices */
+	int opp[2], ns = 0;
+	for (size_t k = 0; k < m->nstri; k++) {
+		const int *tv = m->stri[k].tv;
+		if (tv[0] != v && tv[1] != v && tv[2] != v)
+			continue;
+		if (ns < 2)
+			opp[ns] = tv[0] + tv[1] + tv[2] - u - v;
+		ns++;
+	}
+	if (!cheap && !valid_cheap(m, u, v, ns, cost))
 		return 0;
-	*cost = c;
-	if (!full)
-		return 1;
 	/* the shape first: it fails most often (on the thin triangles of
 	 * marching tetrahedra) and needs no ring */
 	if (!shape_ok(m, u, v))
 		return 0;
 	/* link condition: the common neighbours are the opposite vertices */
-	size_t nu = ring_of(m, u, &m->ring, &m->cring);
+	if (!m->sring) {        /* u's ring, once per star_prep */
+		m->sring = 1;
+		m->snu = ring_of(m, u, &m->ring, &m->cring);
+		m->ustamp++;
+		for (size_t k = 0; k < m->snu; k++)
+			m->umark[m->ring[k]] = m->ustamp;
+	}
+	size_t nu = m->snu;
 	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
-	m->stamp++;
-	for (size_t k = 0; k < nu; k++)
-		m->mark[m->ring[k]] = m->stamp;
 	int common = 0;
 	for (size_t k = 0; k < nvr; k++) {
 		int w = m->ring2[k];
-		if (m->mark[w] != m->stamp)
+		if (m->umark[w] != m->ustamp)
 			continue;
 		if (w != opp[0] && (ns < 2 || w != opp[1]))
 			return 0;
@@ -355,11 +396,14 @@ static void gather(struct dmesh *m, int u)
 		long t = c / 3;
 		if (m->tv[3 * t] < 0)
 			continue;
-		xgrow(&m->star, &m->cstar, m->nstar + 1, sizeof *m->star);
+		if (m->nstar + 1 > m->cstar)
+			xgrow(&m->star, &m->cstar, m->nstar + 1, sizeof *m->star);
 		m->star[m->nstar++] = t;
 		for (int w = m->thead[t]; w >= 0; w = m->pnext[w]) {
-			xgrow(&m->pts, &m->cpts, m->npts + 1, sizeof *m->pts);
-			xgrow(&m->phint, &m->cphint, m->npts + 1, sizeof *m->phint);
+			if (m->npts + 1 > m->cpts)
+				xgrow(&m->pts, &m->cpts, m->npts + 1, sizeof *m->pts);
+			if (m->npts + 1 > m->cphint)
+				xgrow(&m->phint, &m->cphint, m->npts + 1, sizeof *m->phint);
 			m->phint[m->npts] = m->nstar - 1;
 			m->pts[m->npts++] = w;
 		}
@@ -611,9 +655,18 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 		heap_set(h, (struct entry){b.cost, u, b.v});
 		return;
 	}
-	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
+	/* a handful of candidates: an insertion sort (cand_cmp is a total
+	 * order, so any sort gives this order) */
+	for (size_t i = 1; i < nc; i++) {
+		struct cand x = m->cands[i];
+		size_t j = i;
+		for (; j > 0 && cand_cmp(&x, &m->cands[j - 1]) < 0; j--)
+			m->cands[j] = m->cands[j - 1];
+		m->cands[j] = x;
+	}
+	star_prep(m, u);
 	for (size_t i = 0; i < nc; i++) {
-		double c;
+		double c = m->cands[i].cost;
 		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
 			heap_set(h, (struct entry){c, u, m->cands[i].v});
 			return;
@@ -689,14 +742,34 @@ static int hedge_cmp(const void *x, const void *y)
 
 static void classify(struct dmesh *m, struct tri_decimate_stats *st)
 {
-	size_t ne = 0;
-	struct hedge *e = xreallocarray(NULL, 3 * m->nt + 1, sizeof *e);
+	/* the edges sorted by (a, b, t) (the boundary planes are summed in
+	 * that order): bucketed by a, then each bucket (a vertex's few
+	 * edges) by insertion; the keys are distinct, so this is qsort's
+	 * order */
+	size_t ne = 3 * m->nt;
+	struct hedge *e = xreallocarray(NULL, ne + 1, sizeof *e);
+	size_t *first = xcalloc(m->nv + 2, sizeof *first);
+	for (size_t c = 0; c < ne; c++) {
+		int a = m->tv[c], b = m->tv[c - c % 3 + (c % 3 + 1) % 3];
+		first[(a < b ? a : b) + 2]++;
+	}
+	for (size_t i = 0; i < m->nv; i++)
+		first[i + 2] += first[i + 1];
 	for (size_t t = 0; t < m->nt; t++)
 		for (int s = 0; s < 3; s++) {
 			int a = m->tv[3 * t + s], b = m->tv[3 * t + (s + 1) % 3];
-			e[ne++] = a < b ? (struct hedge){a, b, 1, (long)t} : (struct hedge){b, a, -1, (long)t};
+			e[first[(a < b ? a : b) + 1]++] = a < b ? (struct hedge){a, b, 1, (long)t}
+								: (struct hedge){b, a, -1, (long)t};
 		}
-	qsort(e, ne, sizeof *e, hedge_cmp);
+	for (size_t i = 0; i < m->nv; i++)
+		for (size_t k = first[i] + 1; k < first[i + 1]; k++) {
+			struct hedge x = e[k];
+			size_t j = k;
+			for (; j > first[i] && hedge_cmp(&x, &e[j - 1]) < 0; j--)
+				e[j] = e[j - 1];
+			e[j] = x;
+		}
+	free(first);
 	int *nb = xcalloc(m->nv + 1, sizeof *nb);
 	for (size_t i = 0; i < ne;) {
 		size_t j = i;
@@ -753,6 +826,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.face = xcalloc(m.nv + 1, 1);
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
+	m.umark = xcalloc(m.nv + 1, sizeof *m.umark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.exact = xcalloc(m.nv + 1, 1);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
@@ -844,7 +918,8 @@ static void collapse_all(struct dmesh *mp)
 		 * the topology and shape alone (the input checks, which
 		 * rarely fail, run when the new entry is popped), or
 		 * those and the input checks */
-		if (!valid(&m, e.u, e.v, &c, 1)) {
+		star_prep(&m, e.u);
+		if (!valid(&m, e.u, e.v, &c, 0)) {
 			consider(&m, &h, e.u, 1);
 			continue;
 		}
@@ -894,6 +969,8 @@ static void dmesh_free(struct dmesh *m)
 	free(m->face);
 	free(m->flag);
 	free(m->mark);
+	free(m->umark);
+	free(m->stri);
 	free(m->cnt);
 	free(m->exact);
 	free(m->head);
