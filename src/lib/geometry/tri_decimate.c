@@ -2,9 +2,7 @@
  * tri_decimate.c - half-edge collapse decimation under a quadric error
  * bound (tri_decimate.h).
  *
- * Shape: the soup is welded through a hash of bins 1024 weld distances
- * wide (a point is looked up in its bin and in the neighbours it lies
- * within the weld distance of, so two such points always meet), then each vertex keeps the list of its corners
+ * Shape: the soup is welded (tri_weld.h), then each vertex keeps the list of its corners
  * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
  * corners to v and splices them into v's list, dead corners are skipped
  * where the lists are read and unlinked where a vertex's neighbours are
@@ -16,7 +14,11 @@
  * their targets' quadrics changed).  A popped collapse is checked in full
  * before it is made (one that fails re-ranks its vertex by every check),
  * so the order can only miss a collapse that became valid late, never
- * make an invalid one.
+ * make an invalid one.  On the fast-marching walls about five popped
+ * collapses fail (mostly the shape check) for each one made, and each
+ * failure re-weighs all of u's candidates: they share one gathering of
+ * u's star (star_prep), and the link condition is read off v's
+ * triangles against u's marked ring.
  *
  * Vertices whose edges are not all two-sided and consistently oriented,
  * or one-sided off the box (a crack where iso.h dropped a degenerate
@@ -24,12 +26,12 @@
  * on the box moves only along a boundary edge.
  */
 #include "tri_decimate.h"
+#include "tri_weld.h"
 #include "surf.h"
 #include "util.h"
 #include "vec3.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -80,81 +82,6 @@ struct dmesh {
 };
 
 enum { F_LOCKED = 1, F_BOUNDARY = 2, F_DEAD = 4 };
-
-/* ---- welding ---- */
-
-static uint64_t bin_hash(int64_t a, int64_t b, int64_t c)
-{
-	uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15u ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Fu ^
-		     (uint64_t)c * 0x165667B19E3779F9u;
-	return h ^ (h >> 29);
-}
-
-static void bin_of(const double *x, double cell, int64_t b[3])
-{
-	for (int d = 0; d < 3; d++)
-		b[d] = (int64_t)floor(x[d] / cell);
-}
-
-static size_t weld(struct dmesh *m, const double *v, size_t n, double eps)
-{
-	/* a table of vertex numbers, at most half full (3n vertices if no
-	 * two triangles share one; a closed surface has about n/2) */
-	size_t cap = 16, pcap = 0;
-	while (cap < 6 * n + 16)
-		cap *= 2;
-	int *tab = xreallocarray(NULL, cap, sizeof *tab);
-	for (size_t i = 0; i < cap; i++)
-		tab[i] = -1;
-	m->p = NULL;
-	m->tv = xreallocarray(NULL, 3 * n + 1, sizeof *m->tv);
-	/* bins much larger than eps (still far smaller than the triangles):
-	 * the neighbouring bins are searched only along the axes where the
-	 * point lies within eps of its bin's side */
-	double cell = eps > 0 ? 1024 * eps : 1e-300;
-	size_t nv = 0;
-	for (size_t c = 0; c < 3 * n; c++) {
-		const double *x = v + 3 * c;
-		int64_t b[3];
-		bin_of(x, cell, b);
-		int lo[3], hi[3];
-		for (int d = 0; d < 3; d++) {
-			lo[d] = floor((x[d] - eps) / cell) < (double)b[d] ? -1 : 0;
-			hi[d] = floor((x[d] + eps) / cell) > (double)b[d] ? 1 : 0;
-		}
-		int found = -1;
-		for (int dz = lo[2]; dz <= hi[2]; dz++)
-			for (int dy = lo[1]; dy <= hi[1]; dy++)
-				for (int dx = lo[0]; dx <= hi[0]; dx++) {
-					int64_t k[3] = {b[0] + dx, b[1] + dy, b[2] + dz};
-					size_t s = bin_hash(k[0], k[1], k[2]) & (cap - 1);
-					for (; tab[s] >= 0; s = (s + 1) & (cap - 1)) {
-						int w = tab[s];
-						const double *y = m->p + 3 * (size_t)w;
-						int64_t bw[3];
-						bin_of(y, cell, bw);
-						if (bw[0] != k[0] || bw[1] != k[1] || bw[2] != k[2])
-							continue;
-						if (fabs(y[0] - x[0]) <= eps && fabs(y[1] - x[1]) <= eps &&
-						    fabs(y[2] - x[2]) <= eps && (found < 0 || w < found))
-							found = w;
-					}
-				}
-		if (found < 0) {
-			found = (int)nv;
-			xgrow(&m->p, &pcap, 3 * (nv + 1), sizeof *m->p);
-			memcpy(m->p + 3 * nv, x, 3 * sizeof *x);
-			size_t s = bin_hash(b[0], b[1], b[2]) & (cap - 1);
-			while (tab[s] >= 0)
-				s = (s + 1) & (cap - 1);
-			tab[s] = found;
-			nv++;
-		}
-		m->tv[c] = found;
-	}
-	free(tab);
-	return nv;
-}
 
 /* ---- geometry ---- */
 
@@ -357,20 +284,28 @@ static int valid(struct dmesh *m, int u, int v, double *cost, int cheap)
 		for (size_t k = 0; k < m->snu; k++)
 			m->umark[m->ring[k]] = m->ustamp;
 	}
-	size_t nu = m->snu;
-	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
-	int common = 0;
-	for (size_t k = 0; k < nvr; k++) {
-		int w = m->ring2[k];
-		if (m->umark[w] != m->ustamp)
+	/* read off v's live triangles (no ring needed): every vertex near
+	 * both is an opposite one, and each opposite one is met */
+	unsigned met = 0;
+	for (long c = m->head[v]; c >= 0; c = m->next[c]) {
+		const int *tv = m->tv + 3 * (c / 3);
+		if (tv[0] < 0)
 			continue;
-		if (w != opp[0] && (ns < 2 || w != opp[1]))
-			return 0;
-		common++;
+		for (int s = 0; s < 3; s++) {
+			int w = tv[s];
+			if (w == v || m->umark[w] != m->ustamp)
+				continue;
+			if (w == opp[0])
+				met |= 1;
+			else if (ns == 2 && w == opp[1])
+				met |= 2;
+			else
+				return 0;
+		}
 	}
-	if (common != ns)
+	if ((int)((met & 1) + (met >> 1)) != ns)
 		return 0;
-	if (ns == 2 && nu == 3 && nvr == 3)
+	if (ns == 2 && m->snu == 3 && ring_of(m, v, &m->ring2, &m->cring2) == 3)
 		return 0;       /* a tetrahedron would fold flat */
 	return 1;
 }
@@ -996,7 +931,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct dmesh m = {0};
-	m.nv = weld(&m, v, n, weld_eps);
+	m.nv = tri_weld(v, n, weld_eps, &m.p, &m.tv);
 	/* drop the triangles welding made degenerate */
 	size_t nt = 0;
 	for (size_t t = 0; t < n; t++) {
