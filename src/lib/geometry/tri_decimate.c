@@ -223,6 +223,29 @@ static void star_prep(struct dmesh *m, int u)
 	m->nstri = n;
 }
 
+/* u's distinct neighbours into m->nbr from the star of star_prep(m, u),
+ * with the triangles each shares with u in m->cnt (as ring_cnt) */
+static size_t star_ring(struct dmesh *m, int u)
+{
+	m->stamp++;
+	size_t k = 0;
+	for (size_t i = 0; i < m->nstri; i++)
+		for (int s = 0; s < 3; s++) {
+			int w = m->stri[i].tv[s];
+			if (w == u)
+				continue;
+			if (m->mark[w] != m->stamp) {
+				m->mark[w] = m->stamp;
+				m->cnt[w] = 0;
+				if (k + 1 > m->cnbr)
+					xgrow(&m->nbr, &m->cnbr, k + 1, sizeof *m->nbr);
+				m->nbr[k++] = w;
+			}
+			m->cnt[w]++;
+		}
+	return k;
+}
+
 /* whether moving u onto v flips none of u's other triangles and makes
  * none thinner than TRI_DECIMATE_QMIN that was not thinner already
  * (after star_prep(m, u)) */
@@ -570,7 +593,14 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 		heap_remove(h, u);
 		return;
 	}
-	size_t k = ring_cnt(m, u, &m->nbr, &m->cnbr), nc = 0;
+	size_t k, nc = 0;
+	if (full) {
+		/* the star valid needs anyway gives the neighbours too (their
+		 * order does not matter: the candidates are sorted) */
+		star_prep(m, u);
+		k = star_ring(m, u);
+	} else
+		k = ring_cnt(m, u, &m->nbr, &m->cnbr);
 	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
 	for (size_t i = 0; i < k; i++) {
 		double c;
@@ -599,7 +629,6 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 			m->cands[j] = m->cands[j - 1];
 		m->cands[j] = x;
 	}
-	star_prep(m, u);
 	for (size_t i = 0; i < nc; i++) {
 		double c = m->cands[i].cost;
 		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
