@@ -94,10 +94,11 @@ static void normal(const double *a, const double *b, const double *c, double *n)
 	vec3_cross(u, w, n);
 }
 
-static double quality(const double *a, const double *b, const double *c)
+/* the quality 4 sqrt(3) area / (sum of squared edge lengths) of a b c,
+ * whose normal(a, b, c) is n */
+static double quality_n(const double *a, const double *b, const double *c, const double *n)
 {
-	double n[3], u[3], w[3], x[3];
-	normal(a, b, c, n);
+	double u[3], w[3], x[3];
 	vec3_sub(b, a, u);
 	vec3_sub(c, b, w);
 	vec3_sub(a, c, x);
@@ -264,12 +265,12 @@ static int shape_ok(struct dmesh *m, int u, int v)
 		normal(b[0], b[1], b[2], n1);
 		if (!(vec3_dot(st->n, n1) > 0))
 			return 0;
-		double q1 = quality(b[0], b[1], b[2]);
+		double q1 = quality_n(b[0], b[1], b[2], n1);
 		if (q1 >= TRI_DECIMATE_QMIN)
 			continue;
 		if (st->q < 0)
-			st->q = quality(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1],
-					m->p + 3 * (size_t)tv[2]);
+			st->q = quality_n(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1],
+					  m->p + 3 * (size_t)tv[2], st->n);
 		if (q1 < st->q)
 			return 0;
 	}
