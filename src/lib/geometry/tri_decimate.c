@@ -79,6 +79,9 @@ struct dmesh {
 	int su, sring;          /* sring: snu and umark are su's */
 	unsigned *umark;        /* per vertex: ustamp if a neighbour of su */
 	unsigned ustamp;
+	unsigned *tmark;        /* per input triangle: tstamp if in tset */
+	unsigned tstamp;
+	size_t *tset, ctset;    /* input_set's triangles */
 };
 
 enum { F_LOCKED = 1, F_BOUNDARY = 2, F_DEAD = 4 };
@@ -423,6 +426,28 @@ static int set_vertex(const struct dmesh *m, int u, int v, size_t i)
 	return w == u ? v : w;
 }
 
+/* the input triangles of the set_vertex list into m->tset, each once, in
+ * the order of their first appearance (the order the list was once
+ * scanned in, repeats and all: the first within tol is the same one) */
+static size_t input_set(struct dmesh *m, int u, int v)
+{
+	size_t n = 0;
+	m->tstamp++;
+	for (size_t i = 0; i < m->npts + 3 * m->nstar; i++) {
+		int w = set_vertex(m, u, v, i);
+		for (size_t k = m->ostart[w]; k < m->ostart[w + 1]; k++) {
+			size_t t = m->otri[k];
+			if (m->tmark[t] == m->tstamp)
+				continue;
+			m->tmark[t] = m->tstamp;
+			if (n + 1 > m->ctset)
+				xgrow(&m->tset, &m->ctset, n + 1, sizeof *m->tset);
+			m->tset[n++] = t;
+		}
+	}
+	return n;
+}
+
 /* whether, once u is on v, every input vertex u's star answers for stays
  * within tol of the star, and the star's points on the barycentric grid
  * of step 1/TRI_DECIMATE_SAMPLES within tol of the input triangles
@@ -448,6 +473,8 @@ static int points_ok(struct dmesh *m, int u, int v)
 	if (last < 0)
 		return 0;
 	enum { S = TRI_DECIMATE_SAMPLES };
+	size_t nset = 0;
+	int set_built = 0;
 	for (size_t k = 0; k < m->nstar; k++) {
 		const int *tv = m->tv + 3 * m->star[k];
 		if (tv[0] == v || tv[1] == v || tv[2] == v)
@@ -467,16 +494,16 @@ static int points_ok(struct dmesh *m, int u, int v)
 				 * its start (the triangles around u) */
 				if (near_one(m, q, (size_t)last))
 					continue;
-				int near = 0;
-				for (size_t i2 = 0; i2 < m->npts + 3 * m->nstar && !near; i2++) {
-					int w = set_vertex(m, u, v, i2);
-					for (size_t k2 = m->ostart[w]; k2 < m->ostart[w + 1]; k2++)
-						if (near_one(m, q, m->otri[k2])) {
-							near = 1;
-							last = (long)m->otri[k2];
-							break;
-						}
+				if (!set_built) {
+					nset = input_set(m, u, v);
+					set_built = 1;
 				}
+				int near = 0;
+				for (size_t k2 = 0; k2 < nset && !near; k2++)
+					if (near_one(m, q, m->tset[k2])) {
+						near = 1;
+						last = (long)m->tset[k2];
+					}
 				if (!near)
 					return 0;
 			}
@@ -792,6 +819,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
 	m.umark = xcalloc(m.nv + 1, sizeof *m.umark);
+	m.tmark = xcalloc(nt + 1, sizeof *m.tmark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.exact = xcalloc(m.nv + 1, 1);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
@@ -935,6 +963,8 @@ static void dmesh_free(struct dmesh *m)
 	free(m->flag);
 	free(m->mark);
 	free(m->umark);
+	free(m->tmark);
+	free(m->tset);
 	free(m->stri);
 	free(m->cnt);
 	free(m->exact);
