@@ -1,10 +1,11 @@
 #!/bin/sh
 # tests/bench/fmm-speed.sh [BUILD] - the cost of etch -method fmm's
-# decimated output against the code before its tiled extraction and the
-# faster decimator, measured in the same run: the base revision
-# (FMM_BASE, default ed01cc5) is exported with git archive into a
-# temporary directory and built there, then the same commands run with
-# the old and the new etch.  Cases:
+# decimated output against an older revision, measured in the same run:
+# the base revision (FMM_BASE, default 5ab1070: before the decimator
+# weighed each vertex's candidates on one gathering of its star; ed01cc5
+# is the one before the tiled extraction) is exported with git archive
+# into a temporary directory and built there, then the same commands run
+# with the old and the new etch.  Cases:
 #   - examples/defect's Shipley 1470 resist at 80 % dose (one set at 30 s,
 #     then the example's -et 30 -pt 10), and the ray-string on the same
 #     rate file for comparison;
@@ -19,7 +20,7 @@ set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
 case $BUILD in /*) ;; *) BUILD=$TOP/$BUILD ;; esac
-BASE=${FMM_BASE:-ed01cc5}
+BASE=${FMM_BASE:-5ab1070}
 NEW=$BUILD/bin
 [ -x "$NEW/etch" ] || { echo "fmm-speed: $NEW/etch not built"; exit 1; }
 [ -x /usr/bin/time ] || { echo "fmm-speed: /usr/bin/time missing (Debian package time)"; exit 1; }

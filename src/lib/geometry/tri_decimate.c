@@ -2,10 +2,11 @@
  * tri_decimate.c - half-edge collapse decimation under a quadric error
  * bound (tri_decimate.h).
  *
- * Shape: the soup is welded through a hash of bins 1024 weld distances
- * wide (a point is looked up in its bin and in the neighbours it lies
- * within the weld distance of, so two such points always meet), then each vertex keeps the list of its corners
- * (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
+ * Files: the mesh is tri_decimate_mesh.h, the checks against the input
+ * and the collapse itself tri_decimate_input.c, the welding tri_weld.c.
+ *
+ * Shape: the soup is welded, then each vertex keeps the list of its
+ * corners (triangle, slot) as a linked list; a collapse u -> v rewrites u's live
  * corners to v and splices them into v's list, dead corners are skipped
  * where the lists are read and unlinked where a vertex's neighbours are
  * listed (a vertex opposite a collapsed edge would otherwise carry its
@@ -16,7 +17,11 @@
  * their targets' quadrics changed).  A popped collapse is checked in full
  * before it is made (one that fails re-ranks its vertex by every check),
  * so the order can only miss a collapse that became valid late, never
- * make an invalid one.
+ * make an invalid one.  On the fast-marching walls about five popped
+ * collapses fail (mostly the shape check) for each one made, and each
+ * failure re-weighs all of u's candidates: they share one gathering of
+ * u's star (star_prep), and the link condition is read off v's
+ * triangles against u's marked ring.
  *
  * Vertices whose edges are not all two-sided and consistently oriented,
  * or one-sided off the box (a crack where iso.h dropped a degenerate
@@ -24,126 +29,15 @@
  * on the box moves only along a boundary edge.
  */
 #include "tri_decimate.h"
+#include "tri_decimate_mesh.h"
+#include "tri_weld.h"
 #include "surf.h"
 #include "util.h"
 #include "vec3.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-struct cand;
-
-struct dmesh {
-	size_t nv, nt;
-	double *p;              /* 3 per vertex */
-	double *q;              /* quadric, 10 per vertex: aa ab ac ad bb bc bd cc cd dd */
-	unsigned char *face;    /* box faces a vertex lies on, bit f for bounds[f] */
-	unsigned char *flag;    /* F_* */
-	int *tv;                /* 3 vertex per triangle, -1: dead triangle */
-	long *head, *next;      /* corner lists: head per vertex, next per corner */
-	double tol, tol2;
-	int *thead;             /* per triangle: the first input vertex it answers for */
-	int *pnext;             /* per vertex: the next one of the same triangle */
-	int *otv;               /* the input triangles (welded) */
-	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
-	float *osph;            /* per input triangle: a bounding sphere, centre
-				 * and radius (rounded outwards) */
-	/* scratch */
-	long *star;
-	int *pts;
-	size_t cstar, cpts, nstar, npts;
-	int *nbr;
-	size_t cnbr;
-	size_t *phint, cphint;
-	struct cand *cands;
-	size_t ccands;
-	unsigned *mark;
-	unsigned stamp;
-	int *cnt;               /* per vertex: triangles shared with consider's u */
-	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
-				 * consider(u, 0) would give now */
-	int *ring, *ring2;
-	size_t cring, cring2;
-};
-
-enum { F_LOCKED = 1, F_BOUNDARY = 2, F_DEAD = 4 };
-
-/* ---- welding ---- */
-
-static uint64_t bin_hash(int64_t a, int64_t b, int64_t c)
-{
-	uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15u ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Fu ^
-		     (uint64_t)c * 0x165667B19E3779F9u;
-	return h ^ (h >> 29);
-}
-
-static void bin_of(const double *x, double cell, int64_t b[3])
-{
-	for (int d = 0; d < 3; d++)
-		b[d] = (int64_t)floor(x[d] / cell);
-}
-
-static size_t weld(struct dmesh *m, const double *v, size_t n, double eps)
-{
-	/* a table of vertex numbers, at most half full (3n vertices if no
-	 * two triangles share one; a closed surface has about n/2) */
-	size_t cap = 16, pcap = 0;
-	while (cap < 6 * n + 16)
-		cap *= 2;
-	int *tab = xreallocarray(NULL, cap, sizeof *tab);
-	for (size_t i = 0; i < cap; i++)
-		tab[i] = -1;
-	m->p = NULL;
-	m->tv = xreallocarray(NULL, 3 * n + 1, sizeof *m->tv);
-	/* bins much larger than eps (still far smaller than the triangles):
-	 * the neighbouring bins are searched only along the axes where the
-	 * point lies within eps of its bin's side */
-	double cell = eps > 0 ? 1024 * eps : 1e-300;
-	size_t nv = 0;
-	for (size_t c = 0; c < 3 * n; c++) {
-		const double *x = v + 3 * c;
-		int64_t b[3];
-		bin_of(x, cell, b);
-		int lo[3], hi[3];
-		for (int d = 0; d < 3; d++) {
-			lo[d] = floor((x[d] - eps) / cell) < (double)b[d] ? -1 : 0;
-			hi[d] = floor((x[d] + eps) / cell) > (double)b[d] ? 1 : 0;
-		}
-		int found = -1;
-		for (int dz = lo[2]; dz <= hi[2]; dz++)
-			for (int dy = lo[1]; dy <= hi[1]; dy++)
-				for (int dx = lo[0]; dx <= hi[0]; dx++) {
-					int64_t k[3] = {b[0] + dx, b[1] + dy, b[2] + dz};
-					size_t s = bin_hash(k[0], k[1], k[2]) & (cap - 1);
-					for (; tab[s] >= 0; s = (s + 1) & (cap - 1)) {
-						int w = tab[s];
-						const double *y = m->p + 3 * (size_t)w;
-						int64_t bw[3];
-						bin_of(y, cell, bw);
-						if (bw[0] != k[0] || bw[1] != k[1] || bw[2] != k[2])
-							continue;
-						if (fabs(y[0] - x[0]) <= eps && fabs(y[1] - x[1]) <= eps &&
-						    fabs(y[2] - x[2]) <= eps && (found < 0 || w < found))
-							found = w;
-					}
-				}
-		if (found < 0) {
-			found = (int)nv;
-			xgrow(&m->p, &pcap, 3 * (nv + 1), sizeof *m->p);
-			memcpy(m->p + 3 * nv, x, 3 * sizeof *x);
-			size_t s = bin_hash(b[0], b[1], b[2]) & (cap - 1);
-			while (tab[s] >= 0)
-				s = (s + 1) & (cap - 1);
-			tab[s] = found;
-			nv++;
-		}
-		m->tv[c] = found;
-	}
-	free(tab);
-	return nv;
-}
 
 /* ---- geometry ---- */
 
@@ -156,10 +50,11 @@ static void normal(const double *a, const double *b, const double *c, double *n)
 	vec3_cross(u, w, n);
 }
 
-static double quality(const double *a, const double *b, const double *c)
+/* the quality 4 sqrt(3) area / (sum of squared edge lengths) of a b c,
+ * whose normal(a, b, c) is n */
+static double quality_n(const double *a, const double *b, const double *c, const double *n)
 {
-	double n[3], u[3], w[3], x[3];
-	normal(a, b, c, n);
+	double u[3], w[3], x[3];
 	vec3_sub(b, a, u);
 	vec3_sub(c, b, w);
 	vec3_sub(a, c, x);
@@ -178,14 +73,22 @@ static void q_add_plane(double *q, const double *n, const double *p)
 			q[k++] += e[i] * e[j];
 }
 
-/* (qa + qb)(p): the sum of squared distances of p to their planes */
+/* (qa + qb)(p): the sum of squared distances of p to their planes, the
+ * terms of e^T Q e (e = p, 1) in the order aa ab ac ad bb bc bd cc cd dd,
+ * written out (the hot loop of consider: a neighbour's cost) */
 static double q_eval(const double *qa, const double *qb, const double *p)
 {
-	double e[4] = {p[0], p[1], p[2], 1}, s = 0;
-	int k = 0;
-	for (int i = 0; i < 4; i++)
-		for (int j = i; j < 4; j++, k++)
-			s += (i == j ? 1 : 2) * (qa[k] + qb[k]) * e[i] * e[j];
+	double x = p[0], y = p[1], z = p[2], s = 0;
+	s += (qa[0] + qb[0]) * x * x;
+	s += 2 * (qa[1] + qb[1]) * x * y;
+	s += 2 * (qa[2] + qb[2]) * x * z;
+	s += 2 * (qa[3] + qb[3]) * x;
+	s += (qa[4] + qb[4]) * y * y;
+	s += 2 * (qa[5] + qb[5]) * y * z;
+	s += 2 * (qa[6] + qb[6]) * y;
+	s += (qa[7] + qb[7]) * z * z;
+	s += 2 * (qa[8] + qb[8]) * z;
+	s += qa[9] + qb[9];
 	return s > 0 ? s : 0;
 }
 
@@ -213,7 +116,8 @@ static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 				m->mark[w] = m->stamp;
 				if (count)
 					m->cnt[w] = 0;
-				xgrow(r, cap, k + 1, sizeof **r);
+				if (k + 1 > *cap)
+					xgrow(r, cap, k + 1, sizeof **r);
 				(*r)[k++] = w;
 			}
 			if (count)
@@ -231,22 +135,6 @@ static size_t ring_of(struct dmesh *m, int x, int **r, size_t *cap)
 static size_t ring_cnt(struct dmesh *m, int x, int **r, size_t *cap)
 {
 	return ring(m, x, r, cap, 1);
-}
-
-/* the live triangles holding both u and v, and their third vertices */
-static int shared(const struct dmesh *m, int u, int v, int opp[2])
-{
-	int k = 0;
-	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
-		long t = c / 3;
-		const int *tv = m->tv + 3 * t;
-		if (tv[0] < 0 || (tv[0] != v && tv[1] != v && tv[2] != v))
-			continue;
-		if (k < 2)
-			opp[k] = tv[0] + tv[1] + tv[2] - u - v;
-		k++;
-	}
-	return k;
 }
 
 /* the checks of the heap's order: the box, the boundary (ns: the
@@ -267,217 +155,138 @@ static int valid_cheap(const struct dmesh *m, int u, int v, int ns, double *cost
 	return 1;
 }
 
+/* u's star as valid_star reads it, computed once for all the collapses
+ * of u weighed together: u's live triangles in corner-list order (their
+ * vertices, twice the area vector and the quality as they are now), and
+ * (when valid first needs them) u's distinct neighbours marked in m->umark */
+static void star_prep(struct dmesh *m, int u)
+{
+	m->su = u;
+	m->sring = 0;
+	size_t n = 0;
+	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
+		const int *tv = m->tv + 3 * (c / 3);
+		if (tv[0] < 0)
+			continue;
+		if (n + 1 > m->cstri)
+			xgrow(&m->stri, &m->cstri, n + 1, sizeof *m->stri);
+		struct star_tri *st = &m->stri[n++];
+		memcpy(st->tv, tv, sizeof st->tv);
+		const double *a0 = m->p + 3 * (size_t)tv[0], *a1 = m->p + 3 * (size_t)tv[1],
+			     *a2 = m->p + 3 * (size_t)tv[2];
+		normal(a0, a1, a2, st->n);
+		st->q = -1;     /* not yet computed */
+	}
+	m->nstri = n;
+}
+
+/* u's distinct neighbours into m->nbr from the star of star_prep(m, u),
+ * with the triangles each shares with u in m->cnt (as ring_cnt) */
+static size_t star_ring(struct dmesh *m, int u)
+{
+	m->stamp++;
+	size_t k = 0;
+	for (size_t i = 0; i < m->nstri; i++)
+		for (int s = 0; s < 3; s++) {
+			int w = m->stri[i].tv[s];
+			if (w == u)
+				continue;
+			if (m->mark[w] != m->stamp) {
+				m->mark[w] = m->stamp;
+				m->cnt[w] = 0;
+				if (k + 1 > m->cnbr)
+					xgrow(&m->nbr, &m->cnbr, k + 1, sizeof *m->nbr);
+				m->nbr[k++] = w;
+			}
+			m->cnt[w]++;
+		}
+	return k;
+}
+
 /* whether moving u onto v flips none of u's other triangles and makes
- * none thinner than TRI_DECIMATE_QMIN that was not thinner already */
-static int shape_ok(const struct dmesh *m, int u, int v)
+ * none thinner than TRI_DECIMATE_QMIN that was not thinner already
+ * (after star_prep(m, u)) */
+static int shape_ok(struct dmesh *m, int u, int v)
 {
 	const double *pv = m->p + 3 * (size_t)v;
-	for (long c2 = m->head[u]; c2 >= 0; c2 = m->next[c2]) {
-		long t = c2 / 3;
-		const int *tv = m->tv + 3 * t;
-		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
+	for (size_t k = 0; k < m->nstri; k++) {
+		struct star_tri *st = &m->stri[k];
+		const int *tv = st->tv;
+		if (tv[0] == v || tv[1] == v || tv[2] == v)
 			continue;
-		const double *a[3], *b[3];
-		for (int s = 0; s < 3; s++) {
-			a[s] = m->p + 3 * (size_t)tv[s];
-			b[s] = tv[s] == u ? pv : a[s];
-		}
-		double n0[3], n1[3];
-		normal(a[0], a[1], a[2], n0);
+		const double *b[3];
+		for (int s = 0; s < 3; s++)
+			b[s] = tv[s] == u ? pv : m->p + 3 * (size_t)tv[s];
+		double n1[3];
 		normal(b[0], b[1], b[2], n1);
-		if (!(vec3_dot(n0, n1) > 0))
+		if (!(vec3_dot(st->n, n1) > 0))
 			return 0;
-		double q1 = quality(b[0], b[1], b[2]);
-		if (q1 < TRI_DECIMATE_QMIN && q1 < quality(a[0], a[1], a[2]))
+		double q1 = quality_n(b[0], b[1], b[2], n1);
+		if (q1 >= TRI_DECIMATE_QMIN)
+			continue;
+		if (st->q < 0)
+			st->q = quality_n(m->p + 3 * (size_t)tv[0], m->p + 3 * (size_t)tv[1],
+					  m->p + 3 * (size_t)tv[2], st->n);
+		if (q1 < st->q)
 			return 0;
 	}
 	return 1;
 }
 
-/* whether collapsing u onto v is allowed, its cost in *cost; without
- * full only the box, the boundary and the cost are checked (the heap's
- * order), with full the topology, orientation and shape too (the
- * input vertices and samples are points_ok's) */
-static int valid(struct dmesh *m, int u, int v, double *cost, int full)
+/* whether collapsing u onto v is allowed (after star_prep(m, u)), its
+ * cost in *cost: the box, the boundary and the cost (the heap's order;
+ * with cheap, already found to pass by consider, at cost *cost), then
+ * the orientation, shape and topology (the input vertices and samples
+ * are points_ok's) */
+static int valid(struct dmesh *m, int u, int v, double *cost, int cheap)
 {
-	int opp[2];
-	int ns = shared(m, u, v, opp);
-	double c;
-	if (!valid_cheap(m, u, v, ns, &c))
+	/* the triangles holding u and v, and their third vertices */
+	int opp[2], ns = 0;
+	for (size_t k = 0; k < m->nstri; k++) {
+		const int *tv = m->stri[k].tv;
+		if (tv[0] != v && tv[1] != v && tv[2] != v)
+			continue;
+		if (ns < 2)
+			opp[ns] = tv[0] + tv[1] + tv[2] - u - v;
+		ns++;
+	}
+	if (!cheap && !valid_cheap(m, u, v, ns, cost))
 		return 0;
-	*cost = c;
-	if (!full)
-		return 1;
 	/* the shape first: it fails most often (on the thin triangles of
 	 * marching tetrahedra) and needs no ring */
 	if (!shape_ok(m, u, v))
 		return 0;
 	/* link condition: the common neighbours are the opposite vertices */
-	size_t nu = ring_of(m, u, &m->ring, &m->cring);
-	size_t nvr = ring_of(m, v, &m->ring2, &m->cring2);
-	m->stamp++;
-	for (size_t k = 0; k < nu; k++)
-		m->mark[m->ring[k]] = m->stamp;
-	int common = 0;
-	for (size_t k = 0; k < nvr; k++) {
-		int w = m->ring2[k];
-		if (m->mark[w] != m->stamp)
-			continue;
-		if (w != opp[0] && (ns < 2 || w != opp[1]))
-			return 0;
-		common++;
+	if (!m->sring) {        /* u's ring, once per star_prep */
+		m->sring = 1;
+		m->snu = ring_of(m, u, &m->ring, &m->cring);
+		m->ustamp++;
+		for (size_t k = 0; k < m->snu; k++)
+			m->umark[m->ring[k]] = m->ustamp;
 	}
-	if (common != ns)
+	/* read off v's live triangles (no ring needed): every vertex near
+	 * both is an opposite one, and each opposite one is met */
+	unsigned met = 0;
+	for (long c = m->head[v]; c >= 0; c = m->next[c]) {
+		const int *tv = m->tv + 3 * (c / 3);
+		if (tv[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			int w = tv[s];
+			if (w == v || m->umark[w] != m->ustamp)
+				continue;
+			if (w == opp[0])
+				met |= 1;
+			else if (ns == 2 && w == opp[1])
+				met |= 2;
+			else
+				return 0;
+		}
+	}
+	if ((int)((met & 1) + (met >> 1)) != ns)
 		return 0;
-	if (ns == 2 && nu == 3 && nvr == 3)
+	if (ns == 2 && m->snu == 3 && ring_of(m, v, &m->ring2, &m->cring2) == 3)
 		return 0;       /* a tetrahedron would fold flat */
-	return 1;
-}
-
-/* ---- the input vertices' distance to the surface ---- */
-
-/* distance from p to triangle a b c */
-static double point_tri(const double *p, const double *a, const double *b, const double *c)
-{
-	return sqrt(surf_point_tri_dist2(p, a, b, c));
-}
-
-/* u's live triangles into m->star, and the input vertices they answer
- * for, u included, into m->pts */
-static void gather(struct dmesh *m, int u)
-{
-	m->nstar = m->npts = 0;
-	xgrow(&m->pts, &m->cpts, 1, sizeof *m->pts);
-	xgrow(&m->phint, &m->cphint, 1, sizeof *m->phint);
-	m->phint[0] = 0;
-	m->pts[m->npts++] = u;
-	for (long c = m->head[u]; c >= 0; c = m->next[c]) {
-		long t = c / 3;
-		if (m->tv[3 * t] < 0)
-			continue;
-		xgrow(&m->star, &m->cstar, m->nstar + 1, sizeof *m->star);
-		m->star[m->nstar++] = t;
-		for (int w = m->thead[t]; w >= 0; w = m->pnext[w]) {
-			xgrow(&m->pts, &m->cpts, m->npts + 1, sizeof *m->pts);
-			xgrow(&m->phint, &m->cphint, m->npts + 1, sizeof *m->phint);
-			m->phint[m->npts] = m->nstar - 1;
-			m->pts[m->npts++] = w;
-		}
-	}
-}
-
-/* the star's triangle nearest to input vertex w once u is on v (-1: none
- * within tol); with any, the first within tol, from the star's
- * triangle number hint on (the one w belonged to) */
-static long nearest_new(const struct dmesh *m, int u, int v, int w, double *dist, int any,
-			size_t hint)
-{
-	long best = -1;
-	double bd = m->tol;
-	const double *p = m->p + 3 * (size_t)w;
-	for (size_t k0 = 0; k0 < m->nstar; k0++) {
-		size_t k = (k0 + hint) % m->nstar;
-		if (any && best >= 0)
-			break;
-		const int *tv = m->tv + 3 * m->star[k];
-		if (tv[0] < 0 || tv[0] == v || tv[1] == v || tv[2] == v)
-			continue;
-		const double *a[3];
-		for (int s2 = 0; s2 < 3; s2++)
-			a[s2] = m->p + 3 * (size_t)(tv[s2] == u ? v : tv[s2]);
-		double d = point_tri(p, a[0], a[1], a[2]);
-		if (d <= bd) {
-			bd = d;
-			best = m->star[k];
-		}
-	}
-	*dist = bd;
-	return best;
-}
-
-/* whether q is within tol of input triangle t */
-static int near_one(const struct dmesh *m, const double *q, size_t t)
-{
-	const int *o = m->otv + 3 * t;
-	const float *b = m->osph + 4 * t;
-	double e[3] = {q[0] - b[0], q[1] - b[1], q[2] - b[2]};
-	double r = b[3] + m->tol;
-	if (vec3_dot(e, e) > r * r)
-		return 0;       /* its bounding sphere is too far */
-	return point_tri(q, m->p + 3 * (size_t)o[0], m->p + 3 * (size_t)o[1], m->p + 3 * (size_t)o[2]) <=
-	       m->tol;
-}
-
-/* the i-th vertex whose input triangles the samples are checked
- * against (after gather): the tracked input vertices, then the corners
- * of the star once u is on v */
-static int set_vertex(const struct dmesh *m, int u, int v, size_t i)
-{
-	if (i < m->npts)
-		return m->pts[i];
-	i -= m->npts;
-	int w = m->tv[3 * m->star[i / 3] + i % 3];
-	return w == u ? v : w;
-}
-
-/* whether, once u is on v, every input vertex u's star answers for stays
- * within tol of the star, and the star's points on the barycentric grid
- * of step 1/TRI_DECIMATE_SAMPLES within tol of the input triangles
- * around them */
-static int points_ok(struct dmesh *m, int u, int v)
-{
-	gather(m, u);
-	for (size_t i = 0; i < m->npts; i++) {
-		double d;
-		if (nearest_new(m, u, v, m->pts[i], &d, 1, m->phint[i]) < 0)
-			return 0;
-	}
-	/* the set of input triangles the samples are checked against: those
-	 * of the tracked input vertices and of the new star's corners, read
-	 * where they are (whether any is within tol does not depend on the
-	 * order, nor on a triangle being tried twice) */
-	long last = -1;
-	for (size_t i = 0; i < m->npts + 3 * m->nstar && last < 0; i++) {
-		int w = set_vertex(m, u, v, i);
-		if (m->ostart[w] < m->ostart[w + 1])
-			last = (long)m->otri[m->ostart[w]];
-	}
-	if (last < 0)
-		return 0;
-	enum { S = TRI_DECIMATE_SAMPLES };
-	for (size_t k = 0; k < m->nstar; k++) {
-		const int *tv = m->tv + 3 * m->star[k];
-		if (tv[0] == v || tv[1] == v || tv[2] == v)
-			continue;
-		const double *a[3];
-		for (int s2 = 0; s2 < 3; s2++)
-			a[s2] = m->p + 3 * (size_t)(tv[s2] == u ? v : tv[s2]);
-		for (int i = 0; i <= S; i++)
-			for (int j = 0; i + j <= S; j++) {
-				if (i == S || j == S || i + j == 0)
-					continue;       /* the corners are input vertices */
-				double x = (double)i / S, y = (double)j / S, q[3];
-				for (int d = 0; d < 3; d++)
-					q[d] = (1 - x - y) * a[0][d] + x * a[1][d] + y * a[2][d];
-				/* the triangle that held the last sample first (the
-				 * samples are near each other), then the set from
-				 * its start (the triangles around u) */
-				if (near_one(m, q, (size_t)last))
-					continue;
-				int near = 0;
-				for (size_t i2 = 0; i2 < m->npts + 3 * m->nstar && !near; i2++) {
-					int w = set_vertex(m, u, v, i2);
-					for (size_t k2 = m->ostart[w]; k2 < m->ostart[w + 1]; k2++)
-						if (near_one(m, q, m->otri[k2])) {
-							near = 1;
-							last = (long)m->otri[k2];
-							break;
-						}
-				}
-				if (!near)
-					return 0;
-			}
-	}
 	return 1;
 }
 
@@ -591,7 +400,14 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 		heap_remove(h, u);
 		return;
 	}
-	size_t k = ring_cnt(m, u, &m->nbr, &m->cnbr), nc = 0;
+	size_t k, nc = 0;
+	if (full) {
+		/* the star valid needs anyway gives the neighbours too (their
+		 * order does not matter: the candidates are sorted) */
+		star_prep(m, u);
+		k = star_ring(m, u);
+	} else
+		k = ring_cnt(m, u, &m->nbr, &m->cnbr);
 	xgrow(&m->cands, &m->ccands, k + 1, sizeof *m->cands);
 	for (size_t i = 0; i < k; i++) {
 		double c;
@@ -611,62 +427,23 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 		heap_set(h, (struct entry){b.cost, u, b.v});
 		return;
 	}
-	qsort(m->cands, nc, sizeof *m->cands, cand_cmp);
+	/* a handful of candidates: an insertion sort (cand_cmp is a total
+	 * order, so any sort gives this order) */
+	for (size_t i = 1; i < nc; i++) {
+		struct cand x = m->cands[i];
+		size_t j = i;
+		for (; j > 0 && cand_cmp(&x, &m->cands[j - 1]) < 0; j--)
+			m->cands[j] = m->cands[j - 1];
+		m->cands[j] = x;
+	}
 	for (size_t i = 0; i < nc; i++) {
-		double c;
-		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || points_ok(m, u, m->cands[i].v))) {
+		double c = m->cands[i].cost;
+		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || dm_points_ok(m, u, m->cands[i].v))) {
 			heap_set(h, (struct entry){c, u, m->cands[i].v});
 			return;
 		}
 	}
 	heap_remove(h, u);
-}
-
-static void collapse(struct dmesh *m, int u, int v)
-{
-	gather(m, u);
-	/* the input vertices go to the nearest triangle of the new star */
-	long *own = xreallocarray(NULL, m->npts + 1, sizeof *own);
-	for (size_t i = 0; i < m->npts; i++) {
-		double d;
-		own[i] = nearest_new(m, u, v, m->pts[i], &d, 0, 0);
-	}
-	for (size_t k = 0; k < m->nstar; k++)
-		m->thead[m->star[k]] = -1;
-	for (size_t i = m->npts; i-- > 0;)
-		if (own[i] >= 0) {
-			m->pnext[m->pts[i]] = m->thead[own[i]];
-			m->thead[own[i]] = m->pts[i];
-		}
-	free(own);
-	long c = m->head[u];
-	while (c >= 0) {
-		long nx = m->next[c], t = c / 3;
-		int *tv = m->tv + 3 * t;
-		if (tv[0] >= 0) {
-			if (tv[0] == v || tv[1] == v || tv[2] == v)
-				tv[0] = tv[1] = tv[2] = -1;
-			else {
-				tv[c % 3] = v;
-				m->next[c] = m->head[v];
-				m->head[v] = c;
-			}
-		}
-		c = nx;
-	}
-	m->head[u] = -1;
-	m->flag[u] |= F_DEAD;
-	/* v's list without its dead corners (they would pile up on the
-	 * vertices that absorb many) */
-	long *pc = &m->head[v];
-	while (*pc >= 0) {
-		if (m->tv[3 * (*pc / 3)] < 0)
-			*pc = m->next[*pc];
-		else
-			pc = &m->next[*pc];
-	}
-	for (int k = 0; k < 10; k++)
-		m->q[10 * (size_t)v + k] += m->q[10 * (size_t)u + k];
 }
 
 /* ---- edges at setup ---- */
@@ -689,14 +466,34 @@ static int hedge_cmp(const void *x, const void *y)
 
 static void classify(struct dmesh *m, struct tri_decimate_stats *st)
 {
-	size_t ne = 0;
-	struct hedge *e = xreallocarray(NULL, 3 * m->nt + 1, sizeof *e);
+	/* the edges sorted by (a, b, t) (the boundary planes are summed in
+	 * that order): bucketed by a, then each bucket (a vertex's few
+	 * edges) by insertion; the keys are distinct, so this is qsort's
+	 * order */
+	size_t ne = 3 * m->nt;
+	struct hedge *e = xreallocarray(NULL, ne + 1, sizeof *e);
+	size_t *first = xcalloc(m->nv + 2, sizeof *first);
+	for (size_t c = 0; c < ne; c++) {
+		int a = m->tv[c], b = m->tv[c - c % 3 + (c % 3 + 1) % 3];
+		first[(a < b ? a : b) + 2]++;
+	}
+	for (size_t i = 0; i < m->nv; i++)
+		first[i + 2] += first[i + 1];
 	for (size_t t = 0; t < m->nt; t++)
 		for (int s = 0; s < 3; s++) {
 			int a = m->tv[3 * t + s], b = m->tv[3 * t + (s + 1) % 3];
-			e[ne++] = a < b ? (struct hedge){a, b, 1, (long)t} : (struct hedge){b, a, -1, (long)t};
+			e[first[(a < b ? a : b) + 1]++] = a < b ? (struct hedge){a, b, 1, (long)t}
+								: (struct hedge){b, a, -1, (long)t};
 		}
-	qsort(e, ne, sizeof *e, hedge_cmp);
+	for (size_t i = 0; i < m->nv; i++)
+		for (size_t k = first[i] + 1; k < first[i + 1]; k++) {
+			struct hedge x = e[k];
+			size_t j = k;
+			for (; j > first[i] && hedge_cmp(&x, &e[j - 1]) < 0; j--)
+				e[j] = e[j - 1];
+			e[j] = x;
+		}
+	free(first);
 	int *nb = xcalloc(m->nv + 1, sizeof *nb);
 	for (size_t i = 0; i < ne;) {
 		size_t j = i;
@@ -753,6 +550,8 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.face = xcalloc(m.nv + 1, 1);
 	m.flag = xcalloc(m.nv + 1, 1);
 	m.mark = xcalloc(m.nv + 1, sizeof *m.mark);
+	m.umark = xcalloc(m.nv + 1, sizeof *m.umark);
+	m.tmark = xcalloc(nt + 1, sizeof *m.tmark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.exact = xcalloc(m.nv + 1, 1);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
@@ -844,15 +643,16 @@ static void collapse_all(struct dmesh *mp)
 		 * the topology and shape alone (the input checks, which
 		 * rarely fail, run when the new entry is popped), or
 		 * those and the input checks */
-		if (!valid(&m, e.u, e.v, &c, 1)) {
+		star_prep(&m, e.u);
+		if (!valid(&m, e.u, e.v, &c, 0)) {
 			consider(&m, &h, e.u, 1);
 			continue;
 		}
-		if (!points_ok(&m, e.u, e.v)) {
+		if (!dm_points_ok(&m, e.u, e.v)) {
 			consider(&m, &h, e.u, 2);
 			continue;
 		}
-		collapse(&m, e.u, e.v);
+		dm_collapse(&m, e.u, e.v);
 		consider(&m, &h, e.v, 0);
 		/* v's neighbours: only their collapses onto v (v's
 		 * quadric and the triangles they share with it changed)
@@ -894,6 +694,10 @@ static void dmesh_free(struct dmesh *m)
 	free(m->face);
 	free(m->flag);
 	free(m->mark);
+	free(m->umark);
+	free(m->tmark);
+	free(m->tset);
+	free(m->stri);
 	free(m->cnt);
 	free(m->exact);
 	free(m->head);
@@ -919,7 +723,7 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct dmesh m = {0};
-	m.nv = weld(&m, v, n, weld_eps);
+	m.nv = tri_weld(v, n, weld_eps, &m.p, &m.tv);
 	/* drop the triangles welding made degenerate */
 	size_t nt = 0;
 	for (size_t t = 0; t < n; t++) {
