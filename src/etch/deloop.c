@@ -151,14 +151,14 @@ static double median(double *v, size_t k)
  * negative inside developed resist.  *vote 0 for nodes on the top or the
  * substrate: those are developed surface wherever a node lies on them
  * (T < t there), so they cast no vote. */
-static double node_dist(const struct mesh *m, int i, const struct fmm *fm,
+static double node_dist(const struct mesh *m, int i, struct fmm *fm,
 			const struct rfield *f, double t, int *vote)
 {
 	const struct node *nd = &m->node[i];
 	*vote = nd->alive && !(nd->flags & (ON_TOP | ON_SUB));
 	if (!*vote)
 		return 0;
-	double tp = fmm_time_at(fm, nd->p);
+	double tp = fmm_time_at_settled(fm, nd->p);
 	if (tp >= UNREACHED_T)
 		return HUGE_VAL;
 	return (tp - t) * rfield_eval(f, nd->p, NULL);
@@ -166,7 +166,7 @@ static double node_dist(const struct mesh *m, int i, const struct fmm *fm,
 
 /* The patch verdict (deloop.h, stage 2): which nodes are in loops. */
 static unsigned char *classify_patches(const struct mesh *m, const struct deloop_pierce *pc,
-				       size_t np, const struct fmm *fm, const struct rfield *f,
+				       size_t np, struct fmm *fm, const struct rfield *f,
 				       double t, struct deloop_report *rep)
 {
 	size_t nn = m->nnode;
@@ -244,7 +244,7 @@ static unsigned char *classify_patches(const struct mesh *m, const struct deloop
  * within the margin of the true front, so nothing further from it than
  * the margin is deleted. */
 static unsigned char *classify_local(const struct mesh *m, const struct deloop_pierce *pc,
-				     size_t np, const struct fmm *fm, const struct rfield *f,
+				     size_t np, struct fmm *fm, const struct rfield *f,
 				     double t, long *folds)
 {
 	unsigned char *gone = xcalloc(m->nnode, 1);
@@ -488,7 +488,7 @@ static long merge_away(struct mesh *m, const struct deloop_pierce *pc, size_t np
 	return merged;
 }
 
-static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+static void deloop_passes(struct mesh *m, struct fmm *fm, const struct rfield *f, double t,
 			  int join, struct deloop_report *rep)
 {
 	memset(rep, 0, sizeof *rep);
@@ -540,7 +540,7 @@ static void deloop_passes(struct mesh *m, const struct fmm *fm, const struct rfi
  * stop when it is closed, after DELOOP_CLOSE_STALE rounds without
  * improving it, at a round that leaves crossings or an inconsistent
  * mesh, or at the cap. */
-void deloop_close_open(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+void deloop_close_open(struct mesh *m, struct fmm *fm, const struct rfield *f, double t,
 		       struct deloop_report *rep)
 {
 	if (rep->left > 0 || !(rep->open_left > 0))
@@ -607,7 +607,7 @@ void deloop_close_open(struct mesh *m, const struct fmm *fm, const struct rfield
  * 240 mJ/cm2 with 0.1 um segments: 4, however many passes).  A loop-free
  * mesh matters more than a closed seam, so the run is then redone from a
  * copy of the mesh without joining: the sheets end a pull-back apart. */
-long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+long deloop_run(struct mesh *m, struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep)
 {
 	struct mesh *before = mesh_copy(m);
@@ -661,5 +661,5 @@ struct fmm *deloop_classifier(const struct ratefile *r, double seg,
 			break;
 		refine[big]--;
 	}
-	return nseeds > 0 ? fmm_solve_points(r, refine, seeds, nseeds) : fmm_solve(r, refine);
+	return fmm_solve_lazy(r, refine, seeds, nseeds);
 }

@@ -106,7 +106,7 @@ void deloop_set_check(int on);
 /* Deloops m at time t (s), classifying with the arrival times fm and the
  * rates f.  Returns the number of loops removed.  The mesh stays
  * consistent (mesh_check); call mesh_compact afterwards. */
-long deloop_run(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+long deloop_run(struct mesh *m, struct fmm *fm, const struct rfield *f, double t,
 		struct deloop_report *rep);
 
 /* Joins the open borders left by the cuts (deloop_zip.c): only open
@@ -131,7 +131,7 @@ long deloop_close(struct mesh *m, int force);
  * rounds of forced closing and deloop passes, keeping the mesh with the
  * least border open.  For the surface written at a print time, on a copy
  * (ray_run.c): the front that goes on advancing keeps its seams open. */
-void deloop_close_open(struct mesh *m, const struct fmm *fm, const struct rfield *f, double t,
+void deloop_close_open(struct mesh *m, struct fmm *fm, const struct rfield *f, double t,
 		       struct deloop_report *rep);
 
 /* Total length (um) of the open border of m: segments with one triangle
@@ -141,7 +141,10 @@ double deloop_open_length(const struct mesh *m);
 /* The classifier for a simulation: the fast-marching solution from the
  * resist top (nseeds = 0) or from the seed points (x y z triples), its
  * grid refined so that a cell is no larger than about seg (um) across and
- * the standing waves are resolved (fmm_auto_refine). */
+ * the standing waves are resolved (fmm_auto_refine).  The solve is lazy
+ * (fmm_solve_lazy): it marches only as far as the deloops' queries need
+ * (the fronts at the print times), with the full solve's T wherever it
+ * is read; fm is therefore not const in the calls above. */
 struct fmm *deloop_classifier(const struct ratefile *r, double seg,
 			      const double *seeds, int nseeds);
 

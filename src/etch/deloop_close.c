@@ -17,12 +17,12 @@
  * is longer than CLOSE_SPAN of the loop's segments (a wide hole is not
  * lidded), when it is degenerate, or when its triangle faces against the
  * ones it borders (a fold; taken only if no other ear is left).  The new triangles must not cross the surface: after
- * the closing the crossings are searched again (deloop_pierces) and every
+ * the closing the crossings are searched again (dl_pierces_fresh) and every
  * loop one of whose triangles takes part in a crossing is opened again,
  * as it was.  A loop that meets a face of the box, or passes twice
  * through a node, is left as it is.
  */
-#include "deloop.h"
+#include "deloop_grid.h"
 
 #include "util.h"
 #include "vec3.h"
@@ -367,9 +367,11 @@ static long close_way(struct mesh *m, int way)
 	long nl = close_all(m, way, &tris, &loop, &nt);
 	if (nl > 0) {
 		/* the loops whose triangles cross the surface open again
-		 * (removing triangles makes no crossing, so once is enough) */
+		 * (removing triangles makes no crossing, so once is enough);
+		 * only crossings with a new triangle or a segment of one
+		 * count, and only those are searched (deloop_fresh.c) */
 		struct deloop_pierce *pc;
-		size_t np = deloop_pierces(m, &pc);
+		size_t np = dl_pierces_fresh_checked(m, ntri0, &pc);
 		unsigned char *bad = xcalloc((size_t)nl, 1);
 		int *of = xreallocarray(NULL, m->ntri - ntri0 + 1, sizeof *of);
 		for (size_t k = 0; k < m->ntri - ntri0; k++)

@@ -212,6 +212,14 @@ double (*dl_node_positions(const struct mesh *m))[3];
 size_t dl_pierces_geo(const struct mesh *m, struct deloop_pierce **out, struct grid *geo,
 		      struct box_cache *bc);
 
+/* deloop_fresh.c: the pierces of m whose triangle, or a triangle of
+ * whose segment, was added since m had ntri0 triangles (at least: a
+ * pierce of two older elements may be among them), sorted, each once;
+ * every such pierce of the full search is there. */
+size_t dl_pierces_fresh(const struct mesh *m, size_t ntri0, struct deloop_pierce **out);
+/* deloop_near.c: the same, under -check compared with the full search */
+size_t dl_pierces_fresh_checked(const struct mesh *m, size_t ntri0, struct deloop_pierce **out);
+
 /* deloop_near.c: sn becomes m and its pierces pc (np); dl_snap_free
  * releases it. */
 void dl_snap_take(struct deloop_snap *sn, const struct mesh *m, const struct deloop_pierce *pc,

@@ -461,3 +461,35 @@ size_t dl_pierces_near_checked(const struct mesh *m, const struct deloop_snap *s
 	}
 	return n;
 }
+
+/* Whether pierce p has a triangle, or a segment of a triangle, from
+ * ntri0 on. */
+static int fresh_member(const struct mesh *m, size_t ntri0, const struct deloop_pierce *p)
+{
+	const struct segment *sg = &m->seg[p->s];
+	return (size_t)p->t >= ntri0 || (sg->t[0] >= 0 && (size_t)sg->t[0] >= ntri0) ||
+	       (sg->t[1] >= 0 && (size_t)sg->t[1] >= ntri0);
+}
+
+/* dl_pierces_fresh, and under -check its comparison with the full
+ * search: every pierce of it with a new member must be in the list, bit
+ * for bit */
+size_t dl_pierces_fresh_checked(const struct mesh *m, size_t ntri0, struct deloop_pierce **out)
+{
+	size_t n = dl_pierces_fresh(m, ntri0, out);
+	if (check_near) {
+		struct deloop_pierce *full;
+		size_t nf = deloop_pierces(m, &full);
+		for (size_t i = 0; i < nf; i++) {
+			if (!fresh_member(m, ntri0, &full[i]))
+				continue;
+			const struct deloop_pierce *f =
+				n ? bsearch(&full[i], *out, n, sizeof **out, cmp_pierce) : NULL;
+			if (!f || memcmp(f, &full[i], sizeof *f) != 0)
+				die("deloop: -check: the search of a closing's crossings missed "
+				    "segment %d through triangle %d", full[i].s, full[i].t);
+		}
+		free(full);
+	}
+	return n;
+}

@@ -42,6 +42,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 enum { FAR = 0, TRIAL = 1, KNOWN = 2 };
 
@@ -358,17 +359,23 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], struct s
 	return f;
 }
 
-static void march(struct fmm *f, struct solver *s)
+/* Accepts the TRIAL node of least T and updates its neighbours: one step
+ * of the march, the same whether the march runs to the end (march) or
+ * only as far as a query needs (fmm_time_at_settled). */
+static void accept_next(struct fmm *f, struct solver *s)
 {
-	while (s->nheap) {
-		size_t n = pop(s);
-		s->state[n] = KNOWN;
-		f->accepted++;
-		int c[3];
-		coords(s, n, c);
-		relax(s, n, c);
-	}
-	/* the rates stay with the solution, for the surface (fmm_out.c) */
+	size_t n = pop(s);
+	s->state[n] = KNOWN;
+	f->accepted++;
+	int c[3];
+	coords(s, n, c);
+	relax(s, n, c);
+}
+
+/* The rates stay with the solution, for the surface (fmm_out.c); the
+ * march's work arrays go. */
+static void finish(struct fmm *f, struct solver *s)
+{
 	size_t total = (size_t)s->n[0] * (size_t)s->n[1] * (size_t)s->n[2];
 	for (size_t n = 0; n < total; n++)
 		s->slow[n] = s->slow[n] < INFINITY ? 1 / s->slow[n] : 0;
@@ -378,24 +385,37 @@ static void march(struct fmm *f, struct solver *s)
 	free(s->heap);
 }
 
+static void march(struct fmm *f, struct solver *s)
+{
+	while (s->nheap)
+		accept_next(f, s);
+	finish(f, s);
+}
+
+/* The source of a solve from the top: T = 0 on the whole plane
+ * z = zmax, KNOWN, its neighbours TRIAL. */
+static void start_top(struct fmm *f, struct solver *s)
+{
+	size_t plane = (size_t)s->n[0] * (size_t)s->n[1];
+	size_t top = (size_t)(s->n[2] - 1) * plane;
+	for (size_t q = 0; q < plane; q++) {
+		f->t[top + q] = 0;
+		s->state[top + q] = KNOWN;
+	}
+	f->accepted = (long)plane;
+	for (size_t q = 0; q < plane; q++) {
+		int c[3];
+		coords(s, top + q, c);
+		relax(s, top + q, c);
+	}
+}
+
 static struct fmm *solve_top(const struct ratefile *r, const int refine[3], int nodal)
 {
 	struct solver s;
 	struct fmm *f = setup(r, refine, &s);
 	s.nodal = nodal;
-	/* T = 0 on the resist top: the whole plane z = zmax is KNOWN */
-	size_t plane = (size_t)s.n[0] * (size_t)s.n[1];
-	size_t top = (size_t)(s.n[2] - 1) * plane;
-	for (size_t q = 0; q < plane; q++) {
-		f->t[top + q] = 0;
-		s.state[top + q] = KNOWN;
-	}
-	f->accepted = (long)plane;
-	for (size_t q = 0; q < plane; q++) {
-		int c[3];
-		coords(&s, top + q, c);
-		relax(&s, top + q, c);
-	}
+	start_top(f, &s);
 	march(f, &s);
 	return f;
 }
@@ -410,12 +430,11 @@ struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3])
 	return solve_top(r, refine, 1);
 }
 
-struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
-			     const double *p, int npts)
+/* The sources of a solve from points: the nodes within SEED_CELLS of
+ * each of the npts points p, TRIAL at their exact time. */
+static void start_points(const struct ratefile *r, struct fmm *f, struct solver *s,
+			 const double *p, int npts)
 {
-	struct solver s;
-	struct fmm *f = setup(r, refine, &s);
-	s.nodal = 0;
 	for (int q = 0; q < npts; q++) {
 		double x[3];
 		int lo[3], hi[3];
@@ -423,15 +442,15 @@ struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 			x[d] = fmin(fmax(p[3 * q + d], f->bounds[2 * d]), f->bounds[2 * d + 1]);
 			int near = f->h[d] > 0 ? (int)lround((x[d] - f->bounds[2 * d]) / f->h[d]) : 0;
 			lo[d] = near - SEED_CELLS < 0 ? 0 : near - SEED_CELLS;
-			hi[d] = near + SEED_CELLS > s.n[d] - 1 ? s.n[d] - 1 : near + SEED_CELLS;
+			hi[d] = near + SEED_CELLS > s->n[d] - 1 ? s->n[d] - 1 : near + SEED_CELLS;
 		}
 		double sp = slowness(rate_point(r, x));
 		int c[3];
 		for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
 			for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
 				for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++) {
-					size_t n = (size_t)c[0] + (size_t)c[1] * (size_t)s.stride[1] +
-						   (size_t)c[2] * (size_t)s.stride[2];
+					size_t n = (size_t)c[0] + (size_t)c[1] * (size_t)s->stride[1] +
+						   (size_t)c[2] * (size_t)s->stride[2];
 					double dist = 0;
 					for (int d = 0; d < 3; d++) {
 						double e = f->bounds[2 * d] + c[d] * f->h[d] - x[d];
@@ -439,13 +458,88 @@ struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 					}
 					/* mean of the slownesses at the ends: exact for a
 					 * uniform rate, second order for a smooth one */
-					double t = sqrt(dist) * 0.5 * (sp + s.slow[n]);
-					if (s.slow[n] < INFINITY && t < INFINITY)
-						offer(&s, n, t);
+					double t = sqrt(dist) * 0.5 * (sp + s->slow[n]);
+					if (s->slow[n] < INFINITY && t < INFINITY)
+						offer(s, n, t);
 				}
 	}
+}
+
+struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
+			     const double *p, int npts)
+{
+	struct solver s;
+	struct fmm *f = setup(r, refine, &s);
+	s.nodal = 0;
+	start_points(r, f, &s, p, npts);
 	march(f, &s);
 	return f;
+}
+
+/* The march of a lazy solve, kept between queries. */
+struct fmm_march {
+	struct solver s;
+};
+
+struct fmm *fmm_solve_lazy(const struct ratefile *r, const int refine[3],
+			   const double *p, int npts)
+{
+	struct fmm_march *mr = xcalloc(1, sizeof *mr);
+	struct fmm *f = setup(r, refine, &mr->s);
+	mr->s.nodal = 0;
+	if (npts > 0)
+		start_points(r, f, &mr->s, p, npts);
+	else
+		start_top(f, &mr->s);
+	f->march = mr;
+	return f;
+}
+
+/* Whether node n of a lazy solve has its final T: KNOWN, or never to be
+ * reached (FAR at zero rate: relax and the seeds skip such nodes), or
+ * the march is over. */
+static int settled(const struct solver *s, size_t n)
+{
+	return s->state[n] == KNOWN || (s->state[n] == FAR && s->slow[n] == INFINITY) ||
+	       s->nheap == 0;
+}
+
+double fmm_time_at_settled(struct fmm *f, const double p[3])
+{
+	struct fmm_march *mr = f->march;
+	if (mr) {
+		/* the corners fmm_time_at interpolates between (the same
+		 * lower corner; all eight, whatever their weights) */
+		int lo[3], hi[3];
+		for (int d = 0; d < 3; d++) {
+			lo[d] = hi[d] = 0;
+			if (f->n[d] < 2)
+				continue;
+			double x = fmin(fmax(p[d], f->bounds[2 * d]), f->bounds[2 * d + 1]);
+			lo[d] = (int)((x - f->bounds[2 * d]) / f->h[d]);
+			if (lo[d] > f->n[d] - 2)
+				lo[d] = f->n[d] - 2;
+			hi[d] = lo[d] + 1;
+		}
+		struct solver *s = &mr->s;
+		clock_t c0 = 0;
+		int marched = 0;
+		for (int k = lo[2]; k <= hi[2]; k++)
+			for (int j = lo[1]; j <= hi[1]; j++)
+				for (int i = lo[0]; i <= hi[0]; i++) {
+					size_t n = (size_t)i + (size_t)j * (size_t)s->stride[1] +
+						   (size_t)k * (size_t)s->stride[2];
+					if (!settled(s, n) && !marched) {
+						c0 = clock();
+						marched = 1;
+					}
+					while (!settled(s, n))
+						accept_next(f, s);
+				}
+		if (marched)
+			f->march_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
+	}
+	return fmm_time_at(f, p);
 }
 
 int fmm_auto_refine(const struct ratefile *r)
@@ -468,6 +562,13 @@ void fmm_free(struct fmm *f)
 {
 	if (!f)
 		return;
+	if (f->march) {
+		free(f->march->s.slow);
+		free(f->march->s.state);
+		free(f->march->s.pos);
+		free(f->march->s.heap);
+		free(f->march);
+	}
 	free(f->t);
 	free(f->rate);
 	free(f);

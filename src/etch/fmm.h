@@ -51,6 +51,9 @@ struct fmm {
 				 * between nodes by it (iso_surface_speed) */
 	long accepted;          /* nodes reached (for reports) */
 	int refine[3];          /* the refinement the grid was solved with */
+	struct fmm_march *march; /* a lazy solve's march so far (fmm_solve_lazy),
+				  * else NULL */
+	double march_s;         /* CPU seconds a lazy solve has marched */
 };
 
 /* Solves |grad T| R = 1 with T = 0 on the resist top.  refine[d] >= 1
@@ -69,6 +72,20 @@ struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3]);
  * |x - p| / R near each point (thesis Figure 8.13's seeds). */
 struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 			     const double *p, int npts);
+
+/* The solve of fmm_solve (npts 0) or fmm_solve_points, marched only as
+ * far as queries need: T is read by fmm_time_at_settled alone, which
+ * marches on until the nodes it interpolates between are accepted.  The
+ * march is the same, node by node in the same order, so every T read is
+ * the one the full solve gives (deloop's classifier: a mesh's nodes need
+ * T only near the front at the print times, often a small part of the
+ * grid).  f->rate stays NULL. */
+struct fmm *fmm_solve_lazy(const struct ratefile *r, const int refine[3],
+			   const double *p, int npts);
+
+/* fmm_time_at for any solve, a lazy one marched on as far as p needs
+ * (its CPU time added to f->march_s). */
+double fmm_time_at_settled(struct fmm *f, const double p[3]);
 
 void fmm_free(struct fmm *f);
 

@@ -16,6 +16,16 @@
 # run of this script, and the ratio old / new of the deloop time printed;
 # the outputs are compared byte for byte (they must not differ).  The
 # machine is shared: the figures move with its load, the ratio less.
+# Then the examples the test suite deloops most, examples/defect and
+# examples/corner-defect with -deloop (their run.sh's etch: -et 30 -pt 10
+# -cut y 0, on each of the nine resist/dose rate files, made once by
+# this tree's splat and bleach), run by this tree's etch and by the base
+# revision's (DELOOP_EXAMPLES_BASE, default 5ab1070: main before the
+# classifier's lazy march and the closing's search of its new triangles
+# alone), built likewise: the CPU seconds (user + sys,
+# all threads) of the nine runs of each, the ratio old / new, and a cmp
+# of every output (curves.plot, curves.plot.2D, curves.cut, and the
+# "deloop:" summary line without its timings): they must not differ.
 # Asserts nothing.
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
@@ -86,4 +96,51 @@ for seg in 0.1 0.032 0.01; do
 	fi
 	echo "$line"
 done
+
+# the examples: CPU seconds of etch -deloop, this tree's and the base's
+XBASE=${DELOOP_EXAMPLES_BASE:-5ab1070}
+xold=
+if [ -x /usr/bin/time ] && git -C "$TOP" rev-parse --verify -q "$XBASE^{commit}" >/dev/null; then
+	mkdir -p "$tmp/xbase"
+	if git -C "$TOP" archive "$XBASE" | tar -x -C "$tmp/xbase" &&
+		make -s -C "$tmp/xbase" -j2 BUILD=build build/bin/etch >"$tmp/xbase.log" 2>&1; then
+		xold=$tmp/xbase/build/bin/etch
+	else
+		echo "deloop: building $XBASE failed; no comparison on the examples"
+	fi
+else
+	echo "deloop: base revision $XBASE (or /usr/bin/time) missing; no comparison on the examples"
+fi
+# xrun ETCH DIR RATE: etch as the examples' run.sh runs it, in DIR; the
+# CPU seconds appended to DIR/../cpu
+xrun() {
+	mkdir -p "$2" && (cd "$2" && /usr/bin/time -f '%U %S' -a -o ../cpu \
+		"$1" -et 30 -pt 10 -deloop -cut y 0 "$3" 2>log.txt &&
+		sed -n 's/^[^:]*: deloop:/deloop:/; s/ in [0-9.e+-]* s (classifier [0-9.e+-]* s)//p' \
+			log.txt >summary.txt)
+}
+if [ -n "$xold" ]; then
+	echo "deloop: etch -deloop on the examples, old = $XBASE, new = this tree, CPU s of the nine runs"
+	printf '%-16s %9s %9s %7s\n' "example" "old s" "new s" "ratio"
+	for ex in defect corner-defect; do
+		d=$tmp/ex-$ex
+		mkdir -p "$d" && cd "$d" || exit 1
+		"$BUILD/bin/splat" -q "$TOP/examples/$ex/mask.in" >/dev/null 2>&1 ||
+			{ echo "deloop: splat failed on examples/$ex"; continue; }
+		bad=0
+		for r in "$TOP/examples/$ex"/resist-*.in; do
+			n=$(basename "$r" .in)
+			"$BUILD/bin/bleach" -o "$n.bin" image.cont "$r" >/dev/null 2>&1 &&
+				xrun "$xold" old/"$n" "$d/$n.bin" && xrun "$etch" new/"$n" "$d/$n.bin" ||
+				{ echo "deloop: examples/$ex $n failed"; bad=1; continue; }
+			for f in curves.plot curves.plot.2D curves.cut summary.txt; do
+				cmp -s old/"$n"/$f new/"$n"/$f || { echo "deloop: examples/$ex $n: $f differs"; bad=1; }
+			done
+		done
+		awk -v ex="$ex" -v bad=$bad 'FNR == 1 { k++ } { c[k] += $1 + $2 }
+			END { printf "%-16s %9.2f %9.2f %6.2fx%s\n", ex, c[1], c[2],
+				(c[2] > 0 ? c[1] / c[2] : 0), (bad ? "  (outputs differ)" : "  (outputs identical)") }' \
+			old/cpu new/cpu
+	done
+fi
 exit 0
