@@ -1,7 +1,7 @@
 # calib -accuracy and fem -grid: the fit runs at one grid, chosen before
 # it, and the fitted CDs carry an error estimate.  The 0.5 um contact at
 # NA 0.6 of tests/calib/002-recovery.sh (21 x 21 image grid, nz 41), three
-# points made by fem with Mack's Mth 0.5, fitted from 0.47:
+# points made by fem with Mack's Mth 0.5, fitted from 0.49 (two iterations):
 #  - calib -accuracy 10 chooses the grid with fem -accuracy 10 at the
 #    middle point (DIR/accuracy, its levels' tables there); every trial's
 #    Makefile runs that grid (SPLATGRID, BLEACHNZ), the one the choice
@@ -33,7 +33,7 @@ bake diffusion 0.05
 develop mack 0.1 0.0001 0.5 5
 grid nz 41
 IN
-sed 's/mack 0.1 0.0001 0.5 5/mack 0.1 0.0001 0.47 5/' truth.in >start.in
+sed "s/mack 0.1 0.0001 0.5 5/mack 0.1 0.0001 0.49 5/" truth.in >start.in
 M="-rel 5 -hole 0 0"
 
 fem -q -n -if m.in -bf truth.in -et 60 -points 0:80 -measure "$M" -d fixed -grid "33 33 61" ||

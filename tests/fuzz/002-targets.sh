@@ -1,7 +1,9 @@
 # The fuzzing harness builds (tests/fuzz/targets/fuzz.sh, clang's libFuzzer) and
 # each reader's target runs clean over its seed corpus and the regress
 # files of its reader, once each: no crash, no sanitizer report.  Skipped
-# without clang (CI installs it).  The harness is built in BUILD/fuzz-check
+# without clang (CI installs it).  The harness is built (at -O0: compiling
+# is most of this test's time, and the sanitizers check the same accesses)
+# in BUILD/fuzz-check
 # and kept there: the next make check rebuilds only what changed since
 # (fuzz.sh compares each object with its sources, headers and fuzz.sh).
 . "$TOP/tests/lib/common.sh"

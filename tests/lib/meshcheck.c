@@ -18,7 +18,9 @@
  *     barycentric grid of step 1/4, vertices and edges included) to the
  *     nearest triangle of B, and the reverse; distances beyond CAP (um)
  *     are reported as CAP.  Point-to-triangle distances by brute force
- *     over the triangles a uniform grid of cells lists near the point.
+ *     over the triangles a uniform grid of cells lists near the point; a
+ *     point's search ends at a triangle within the largest distance so
+ *     far, which that point cannot change (the result of a full search).
  */
 #include "fmt_plot.h"
 #include "util.h"
@@ -251,12 +253,17 @@ static void grid_build(struct grid *g, const struct plot_set *s, double cap)
 	}
 }
 
-static double nearest(const struct grid *g, const struct plot_set *s, const double *p, double cap)
+/* the distance from p to the nearest triangle listed in its cell (cap if
+ * none is nearer); the search stops at the first triangle within enough:
+ * the caller wants the largest of these minima, and one at or under the
+ * largest so far cannot change it (the same result as the full search) */
+static double nearest(const struct grid *g, const struct plot_set *s, const double *p, double cap,
+		      double enough)
 {
 	size_t q = ((size_t)cell_of(g, 2, p[2]) * G + (size_t)cell_of(g, 1, p[1])) * G +
 		   (size_t)cell_of(g, 0, p[0]);
 	double best = cap;
-	for (size_t k = g->start[q]; k < g->start[q + 1]; k++)
+	for (size_t k = g->start[q]; k < g->start[q + 1] && best > enough; k++)
 		best = fmin(best, pt_tri(p, s->curves[g->item[k]].p));
 	return best;
 }
@@ -273,7 +280,7 @@ static double one_side(const struct plot_set *a, const struct plot_set *b, doubl
 				double u = i / 4.0, v = j / 4.0, w = 1 - u - v, p[3];
 				for (int d = 0; d < 3; d++)
 					p[d] = w * t[d] + u * t[3 + d] + v * t[6 + d];
-				worst = fmax(worst, nearest(&g, b, p, cap));
+				worst = fmax(worst, nearest(&g, b, p, cap, worst));
 			}
 	}
 	free(g.start);
