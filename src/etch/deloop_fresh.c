@@ -122,6 +122,19 @@ static void look(struct fresh *fr, const double *lo, const double *hi, int kind,
 			}
 }
 
+/* the box of new element q: triangle nt[q] below na, else segment
+ * ns[q - na] */
+static void elem_box(const struct fresh *fr, const int *nt, size_t na, const int *ns, size_t q,
+		     double lo[3], double hi[3])
+{
+	if (q < na) {
+		struct gitem it;
+		tri_fbox(fr->m, fr->P, nt[q], &it, lo, hi);
+	} else {
+		seg_box(fr->m, fr->P, ns[q - na], lo, hi);
+	}
+}
+
 /* the cells of the new elements, at a cell size that keeps the entries
  * within FRESH_ENTRIES per element */
 static void fresh_cells(struct fresh *fr, const int *nt, size_t na, const int *ns, size_t nsn)
@@ -134,13 +147,9 @@ static void fresh_cells(struct fresh *fr, const int *nt, size_t na, const int *n
 	}
 	for (size_t q = 0; q < na + nsn; q++) {
 		double lo[3], hi[3];
-		if (q < na) {
-			struct gitem it;
-			tri_fbox(m, fr->P, nt[q], &it, lo, hi);
-		} else {
-			seg_box(m, fr->P, ns[q - na], lo, hi);
+		elem_box(fr, nt, na, ns, q, lo, hi);
+		if (q >= na)
 			len += mesh_seg_length(m, ns[q - na]);
-		}
 		for (int d = 0; d < 3; d++) {
 			fr->ulo[d] = fmin(fr->ulo[d], lo[d]);
 			fr->uhi[d] = fmax(fr->uhi[d], hi[d]);
@@ -161,12 +170,7 @@ static void fresh_cells(struct fresh *fr, const int *nt, size_t na, const int *n
 		}
 		for (size_t q = 0; fits && q < na + nsn; q++) {
 			double lo[3], hi[3];
-			if (q < na) {
-				struct gitem it;
-				tri_fbox(m, fr->P, nt[q], &it, lo, hi);
-			} else {
-				seg_box(m, fr->P, ns[q - na], lo, hi);
-			}
+			elem_box(fr, nt, na, ns, q, lo, hi);
 			cells += box_cells(&fr->g, lo, hi);
 		}
 		if (fits && cells <= FRESH_ENTRIES * (double)(na + nsn) + 64) {
@@ -178,12 +182,7 @@ static void fresh_cells(struct fresh *fr, const int *nt, size_t na, const int *n
 	fr->ne = 0;
 	for (size_t q = 0; q < na + nsn; q++) {
 		double lo[3], hi[3];
-		if (q < na) {
-			struct gitem it;
-			tri_fbox(m, fr->P, nt[q], &it, lo, hi);
-		} else {
-			seg_box(m, fr->P, ns[q - na], lo, hi);
-		}
+		elem_box(fr, nt, na, ns, q, lo, hi);
 		long c0[3], c1[3];
 		cell_range(&fr->g, lo, hi, c0, c1);
 		for (long k = c0[2]; k <= c1[2]; k++)
