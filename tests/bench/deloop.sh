@@ -37,20 +37,27 @@ mkrate=$BUILD/tests/lib/mkrate
 [ -x "$mkrate" ] || { echo "deloop: $mkrate not built"; exit 1; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/deloopbench.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT INT TERM
-BASE=${DELOOP_BASE:-6931a7e}
-old=
-if [ -x /usr/bin/time ] && git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
-	mkdir -p "$tmp/base"
-	if git -C "$TOP" archive "$BASE" | tar -x -C "$tmp/base" &&
-		make -s -C "$tmp/base" -j2 BUILD=build build/bin/etch >"$tmp/base.log" 2>&1; then
-		old=$tmp/base/build/bin/etch
-		echo "deloop: old = $BASE, new = this tree, in the same run; ratio old / new of the deloop CPU time"
+# base_etch REV DIR WHAT: etch of revision REV built in $tmp/DIR (git
+# archive, make), its path in $base_bin, or a line saying why not (WHAT
+# names the comparison) and base_bin empty
+base_etch() {
+	base_bin=
+	if [ -x /usr/bin/time ] && git -C "$TOP" rev-parse --verify -q "$1^{commit}" >/dev/null; then
+		mkdir -p "$tmp/$2"
+		if git -C "$TOP" archive "$1" | tar -x -C "$tmp/$2" &&
+			make -s -C "$tmp/$2" -j2 BUILD=build build/bin/etch >"$tmp/$2.log" 2>&1; then
+			base_bin=$tmp/$2/build/bin/etch
+		else
+			echo "deloop: building $1 failed; no comparison$3"
+		fi
 	else
-		echo "deloop: building $BASE failed; no comparison"
+		echo "deloop: base revision $1 (or /usr/bin/time) missing; no comparison$3"
 	fi
-else
-	echo "deloop: base revision $BASE (or /usr/bin/time) missing; no comparison"
-fi
+}
+BASE=${DELOOP_BASE:-6931a7e}
+base_etch "$BASE" base ""
+old=$base_bin
+[ -z "$old" ] || echo "deloop: old = $BASE, new = this tree, in the same run; ratio old / new of the deloop CPU time"
 cd "$tmp" || exit 1
 "$mkrate" -o two.bin 31 41 31 -1.5 1.5 -1.5 2.5 -1.5 1.5 1 || exit 1
 
@@ -99,18 +106,8 @@ done
 
 # the examples: CPU seconds of etch -deloop, this tree's and the base's
 XBASE=${DELOOP_EXAMPLES_BASE:-5ab1070}
-xold=
-if [ -x /usr/bin/time ] && git -C "$TOP" rev-parse --verify -q "$XBASE^{commit}" >/dev/null; then
-	mkdir -p "$tmp/xbase"
-	if git -C "$TOP" archive "$XBASE" | tar -x -C "$tmp/xbase" &&
-		make -s -C "$tmp/xbase" -j2 BUILD=build build/bin/etch >"$tmp/xbase.log" 2>&1; then
-		xold=$tmp/xbase/build/bin/etch
-	else
-		echo "deloop: building $XBASE failed; no comparison on the examples"
-	fi
-else
-	echo "deloop: base revision $XBASE (or /usr/bin/time) missing; no comparison on the examples"
-fi
+base_etch "$XBASE" xbase " on the examples"
+xold=$base_bin
 # xrun ETCH DIR RATE: etch as the examples' run.sh runs it, in DIR; the
 # CPU seconds appended to DIR/../cpu
 xrun() {
