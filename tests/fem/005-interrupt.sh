@@ -4,9 +4,11 @@
 #    (region.ps included, with -target);
 #  - killed mid-sweep (SIGTERM to its process group, as ^C sends SIGINT to
 #    the terminal's; both are trapped alike), fem says in one line how
-#    many points are done (a point make was finishing may be deleted, so 0 is possible) and that the same command resumes, and exits
-#    130; the finished points stay, no temporary is left, and the same
-#    command then finishes the sweep (fem.dat has every point).
+#    many points are done and that the same command resumes, and exits
+#    130; the points finished before the signal stay (one caught between
+#    its measure and its clean-up may be deleted by make), no temporary
+#    is left once the process group has ended, and the same command then
+#    finishes the sweep (fem.dat has every point).
 . "$TOP/tests/lib/common.sh"
 built fem
 need setsid
