@@ -508,19 +508,13 @@ double fmm_time_at_settled(struct fmm *f, const double p[3])
 {
 	struct fmm_march *mr = f->march;
 	if (mr) {
-		/* the corners fmm_time_at interpolates between (the same
-		 * lower corner; all eight, whatever their weights) */
+		/* the corners fmm_time_at interpolates between (all eight,
+		 * whatever their weights) */
 		int lo[3], hi[3];
-		for (int d = 0; d < 3; d++) {
-			lo[d] = hi[d] = 0;
-			if (f->n[d] < 2)
-				continue;
-			double x = fmin(fmax(p[d], f->bounds[2 * d]), f->bounds[2 * d + 1]);
-			lo[d] = (int)((x - f->bounds[2 * d]) / f->h[d]);
-			if (lo[d] > f->n[d] - 2)
-				lo[d] = f->n[d] - 2;
-			hi[d] = lo[d] + 1;
-		}
+		double w[3];
+		fmm_cell(f, p, lo, w);
+		for (int d = 0; d < 3; d++)
+			hi[d] = f->n[d] < 2 ? lo[d] : lo[d] + 1;
 		struct solver *s = &mr->s;
 		clock_t c0 = 0;
 		int marched = 0;

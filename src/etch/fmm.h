@@ -100,6 +100,10 @@ void fmm_free(struct fmm *f);
 enum { FMM_AUTO_MAX = 16 };
 int fmm_auto_refine(const struct ratefile *r);
 
+/* The grid cell holding p (clamped to the box): its lower corner lo and
+ * p's fractions w along it (lo 0, w 0 on an axis of one node), the
+ * corners and weights fmm_time_at interpolates with. */
+void fmm_cell(const struct fmm *f, const double p[3], int lo[3], double w[3]);
 /* T at any point, by trilinear interpolation; p is clamped into the box. */
 double fmm_time_at(const struct fmm *f, const double p[3]);
 

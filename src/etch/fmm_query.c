@@ -27,10 +27,8 @@
  * resolution of it. */
 enum { BISECT_STEPS = 60, BRACKET_STEPS = 60 };
 
-static double trilinear(const struct fmm *f, const double *v, const double p[3])
+void fmm_cell(const struct fmm *f, const double p[3], int lo[3], double w[3])
 {
-	int lo[3];
-	double w[3];
 	for (int d = 0; d < 3; d++) {
 		lo[d] = 0;
 		w[d] = 0;
@@ -43,6 +41,13 @@ static double trilinear(const struct fmm *f, const double *v, const double p[3])
 			lo[d] = f->n[d] - 2;
 		w[d] = u - lo[d];
 	}
+}
+
+static double trilinear(const struct fmm *f, const double *v, const double p[3])
+{
+	int lo[3];
+	double w[3];
+	fmm_cell(f, p, lo, w);
 	size_t sy = (size_t)f->n[0], sz = sy * (size_t)f->n[1];
 	double sum = 0;
 	for (int q = 0; q < 8; q++) {
