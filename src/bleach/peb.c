@@ -408,8 +408,10 @@ static double peb_node(double T, int n, int i)
  * integral is (ln den + max(kq d tr, 0)) / kq with den = s + kq h rho >= 1
  * (s = E or 1): the second term is added to A at once, den multiplied
  * into P, so that a point costs one expm1 and one division a step and a
- * logarithm a pass instead of expm1, log1p and two divisions (P is folded
- * into A before it could overflow). */
+ * logarithm a bake instead of expm1, log1p and two divisions (P is a field
+ * of the whole bake, folded into A before it could overflow and at the
+ * end: with the x-y diffusion at every step a pass is one step, and a
+ * logarithm a pass was a fifth of the reaction). */
 /* 2^{-j/64} and 1 - 2^{-j/64}, j < 64, for one_minus_exp (set by
  * exp_tables_init before any worker starts; the same values each time). */
 static double exp_t[64], exp_c[64];
@@ -602,7 +604,8 @@ static void zops_set(struct zops *o, const struct peb_params *pp, int nz, double
 
 /* A block's arrays, in place in the whole field ([j * ld + i] for its b
  * columns, ld the field's columns): acid, quencher, the integral of h^p,
- * and their noise (NULL without); y and P scratch of nz rows of b. */
+ * and their noise (NULL without), the product P of react_order1 (NULL at
+ * other orders); y scratch of nz rows of b. */
 struct block {
 	double *H, *Q, *A, *dH, *dQ, *dA, *y, *P;
 	size_t ld;
@@ -619,11 +622,8 @@ static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, s
 			  const struct block *k, double T, int n, int i0, int i1, double lead,
 			  int tail, double dz)
 {
-	size_t nb = (size_t)nz * b, ld = k->ld;
+	size_t ld = k->ld;
 	int fast = pp->p == 1 && pp->kq > 0;
-	if (fast)
-		for (size_t j = 0; j < nb; j++)
-			k->P[j] = 1;
 	double prev = lead;     /* the step before node i not yet reacted over */
 	for (int i = i0; i <= i1 && (i < i1 || tail); i++) {
 		double next = i < i1 ? peb_node(T, n, i + 1) - peb_node(T, n, i) : 0;
@@ -631,7 +631,7 @@ static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, s
 		double e = exp(-pp->kloss * 0.5 * tr);
 		for (int z = 0; z < nz; z++) {
 			size_t r = (size_t)z * ld;
-			double *H = k->H + r, *Q = k->Q + r, *A = k->A + r, *P = k->P + (size_t)z * b;
+			double *H = k->H + r, *Q = k->Q + r, *A = k->A + r, *P = fast ? k->P + r : NULL;
 			if (fast && k->dH)
 				react_order1_noise(pp, tr, e, b, H, Q, A, P, k->dH + r, k->dQ + r, k->dA + r);
 			else if (fast)
@@ -655,10 +655,6 @@ static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, s
 		}
 		prev = next;
 	}
-	if (fast)
-		for (int z = 0; z < nz; z++)
-			for (size_t j = 0; j < b; j++)
-				k->A[(size_t)z * ld + j] += log(k->P[(size_t)z * b + j]) / pp->kq;
 }
 
 /* Columns per block: the block's rows of H, Q, A (PEB_BLOCK values
@@ -668,6 +664,7 @@ static void columns_steps(const struct peb_params *pp, struct zops *o, int nz, s
 struct peb_pass {
 	const struct peb_params *pp;
 	double *f[6];           /* H, Q, A, dH, dQ, dA: [k * ncol + q]; no noise: 3 */
+	double *P;              /* react_order1's products, or NULL */
 	int nf;
 	size_t ncol;
 	int nz, n, i0, i1;      /* steps i0 .. i1 - 1 of n */
@@ -677,7 +674,7 @@ struct peb_pass {
 	double *scratch;        /* per worker: PASS_SCRATCH(nz) */
 };
 
-#define PASS_SCRATCH(nz) ((size_t)(nz) * (2 * PEB_BLOCK + 2 * ZSTEP_BUF(1)))
+#define PASS_SCRATCH(nz) ((size_t)(nz) * (PEB_BLOCK + 2 * ZSTEP_BUF(1)))
 
 /* The blocks lo .. hi - 1 in place: a block's columns are PEB_BLOCK
  * consecutive values of every plane, so they are worked on where they
@@ -688,14 +685,14 @@ static void pass_blocks(void *ctx, size_t lo, size_t hi, int worker)
 	int nz = p->nz;
 	size_t per = (size_t)nz * PEB_BLOCK;
 	double *w = p->scratch + (size_t)worker * PASS_SCRATCH(nz);
-	struct zops o = {.buf = w + 2 * per};
+	struct zops o = {.buf = w + per};
 	for (size_t blk = lo; blk < hi; blk++) {
 		size_t q0 = blk * PEB_BLOCK;
 		size_t b = p->ncol - q0 < PEB_BLOCK ? p->ncol - q0 : PEB_BLOCK;
 		double *v[6];
 		for (int a = 0; a < 6; a++)
 			v[a] = a < p->nf ? p->f[a] + q0 : NULL;
-		struct block k = {v[0], v[1], v[2], v[3], v[4], v[5], w, w + per, p->ncol};
+		struct block k = {v[0], v[1], v[2], v[3], v[4], v[5], w, p->P ? p->P + q0 : NULL, p->ncol};
 		columns_steps(p->pp, &o, nz, b, &k, p->pp->t, p->n, p->i0, p->i1, p->lead, p->tail,
 			      p->dz);
 	}
@@ -719,8 +716,11 @@ static void run_bake(const struct peb_params *pp, double *f, const double *q0, d
 	double *Q = xreallocarray(NULL, np, sizeof *Q);
 	double *A = xcalloc(np, sizeof *A);
 	double *dA = dh ? xcalloc(np, sizeof *dA) : NULL;
+	double *P = pp->p == 1 && pp->kq > 0 ? xreallocarray(NULL, np, sizeof *P) : NULL;
 	for (size_t k = 0; k < np; k++) {
 		Q[k] = q0 ? q0[k] : pp->q0;
+		if (P)
+			P[k] = 1;
 		if (!(H[k] > 0))
 			H[k] = 0;
 		/* a noisy acid (the drawn counts over the mean PAG count, the
@@ -738,7 +738,7 @@ static void run_bake(const struct peb_params *pp, double *f, const double *q0, d
 	double T = pp->t, prev = 0;
 	size_t nblk = (ncol + PEB_BLOCK - 1) / PEB_BLOCK;
 	exp_tables_init();
-	struct peb_pass pass = {pp, {H, Q, A, dh, dq, dA}, dh ? 6 : 3, ncol, nz, n, 0, 0, 0, 1, dz,
+	struct peb_pass pass = {pp, {H, Q, A, dh, dq, dA}, P, dh ? 6 : 3, ncol, nz, n, 0, 0, 0, 1, dz,
 				xreallocarray(NULL, (size_t)par_threads(), PASS_SCRATCH(nz) * sizeof(double))};
 	int whole = xy && ninner == 1 && T > 0;
 	if (whole) {
@@ -793,6 +793,11 @@ static void run_bake(const struct peb_params *pp, double *f, const double *q0, d
 		if (xy && T > 0 && !whole)
 			peb_diffuse_xy(H, nx, ny, nz, dx, dy, pp->dh, 0.5 * prev);
 		memcpy(hout, H, np * sizeof *H);
+	}
+	if (P) {
+		for (size_t k = 0; k < np; k++)
+			A[k] += log(P[k]) / pp->kq;
+		free(P);
 	}
 	for (size_t k = 0; k < np; k++)
 		f[k] = exp(-pp->kamp * A[k]);
