@@ -451,8 +451,10 @@ static inline double one_minus_exp(double u)
 		unsigned long long i;
 	} sc = {.i = (unsigned long long)(1023 - k) << 52};
 	double e = sc.d * exp_t[j];
-	double base = k == 0 ? exp_c[j] : 1 - e;
-	return base - e * p;
+	/* chosen by an index, not a branch: which one varies from point to
+	 * point, and the mispredicted branch cost more than the table */
+	const double base[2] = {1 - e, exp_c[j]};
+	return base[k == 0] - e * p;
 }
 
 /* One point of react_order1: h1, q1, den and max(kq d tr, 0) from h >= 0
@@ -465,10 +467,14 @@ static inline void neutralise1(double kq, double tr, double h, double q, double 
 	double d = h - q, a = kq * d, x = a * tr, u = x > 0 ? x : -x;
 	/* 1 - e^{-u} to its own precision, e^{-u} from it to 1e-16
 	 * absolute, all that is used of it */
-	double em = one_minus_exp(u), E = 1 - em;
+	double em = one_minus_exp(u);
 	int tiny = !(u > 1e-12);        /* rho = tr as d -> 0 */
-	double ad = tiny ? 1 : (a > 0 ? a : -a), w = tiny ? tr : em;
-	double s = x >= 0 ? E : 1, num = x >= 0 ? 1 : E;
+	double ad = tiny ? 1 : fabs(a), w = tiny ? tr : em;
+	/* s = E, num = 1 for x >= 0, else s = 1, num = E (E = 1 - em): by
+	 * arithmetic rather than a branch on the sign of the excess, which
+	 * changes across every image edge (the same values) */
+	double pos = x >= 0;
+	double s = 1 - em * pos, num = 1 - em * (1 - pos);
 	double D = s * ad + kq * h * w, iad = 1 / ad, iD = 1 / D;
 	*den = D * iad;
 	*h1 = h * num * ad * iD;
@@ -545,6 +551,41 @@ static double noise_eps(double h, double q, double dh, double dq)
 	return sc > 0 ? NOISE_EPS * (h + q + 1e-12) / sc : 0;
 }
 
+/* neutralise1 and its derivative along (dh, dq), from the closed form
+ * itself (the derivative of 1 - e^{-u} is e^{-u}, the rest quotients
+ * and products): h1, q1 and ln den + xp moved by *dh1, *dq1 and *dl.  0
+ * (nothing set) where the closed form has no derivative to take: d
+ * within rounding of zero (neutralise1's rho = tr), no acid, a quencher
+ * below zero (a diffusion undershoot); a quencher of exactly zero moves
+ * only up (the clamp before the reaction). */
+static inline int neutralise1_tangent(double kq, double tr, double h, double q, double dh,
+				      double dq, double *h1, double *q1, double *den, double *xp,
+				      double *dh1, double *dq1, double *dl)
+{
+	double d = h - q, a = kq * d, x = a * tr, u = fabs(x);
+	if (!(u > 1e-12) || !(h > 0) || q < 0)
+		return 0;
+	if (q == 0 && dq < 0)
+		dq = 0;
+	double em = one_minus_exp(u), E = 1 - em, ad = fabs(a);
+	double pos = x >= 0;
+	double s = 1 - em * pos, num = 1 - em * (1 - pos);
+	double D = s * ad + kq * h * em, iad = 1 / ad, iD = 1 / D;
+	*den = D * iad;
+	*h1 = h * num * ad * iD;
+	*q1 = *h1 - d > 0 ? *h1 - d : 0;
+	*xp = x > 0 ? x : 0;
+	/* the step along (dh, dq): u, |a| and em first, then s, num, D */
+	double dd = dh - dq, sg = x >= 0 ? 1 : -1;
+	double dad = sg * kq * dd, du = dad * tr, dem = E * du;
+	double ds = -dem * pos, dnum = -dem * (1 - pos);
+	double dD = ds * ad + s * dad + kq * (dh * em + h * dem);
+	*dh1 = (dh * num * ad + h * dnum * ad + h * num * dad) * iD - *h1 * dD * iD;
+	*dq1 = *h1 - d > 0 ? *dh1 - dd : 0;
+	*dl = dD * iD - dad * iad + (x > 0 ? kq * dd * tr : 0);
+	return 1;
+}
+
 static void react_order1_noise(const struct peb_params *pp, double tr, double e, size_t nb,
 			       double *H, double *Q, double *A, double *P, double *dH,
 			       double *dQ, double *dA)
@@ -552,16 +593,26 @@ static void react_order1_noise(const struct peb_params *pp, double tr, double e,
 	double kq = pp->kq, ikq = 1 / kq;
 	for (size_t k = 0; k < nb; k++) {
 		double h = H[k] > 0 ? H[k] * e : 0, q = Q[k] > 0 ? Q[k] : 0, h1, q1, den, xp;
-		neutralise1(kq, tr, h, q, &h1, &q1, &den, &xp);
-		double dh = dH[k] * e, dq = dQ[k], eps = noise_eps(h, q, dh, dq);
-		if (eps > 0) {
-			/* perturbed before the clamps (a value below zero, a
-			 * diffusion undershoot, has no derivative) */
-			double hp = H[k] * e + eps * dh, qp = Q[k] + eps * dq, h1p, q1p, denp, xpp;
-			neutralise1(kq, tr, hp > 0 ? hp : 0, qp > 0 ? qp : 0, &h1p, &q1p, &denp, &xpp);
-			dH[k] = (h1p - h1) / eps * e;
-			dQ[k] = (q1p - q1) / eps;
-			dA[k] += ((denp - den) / den + (xpp - xp)) / eps * ikq;
+		double dh = dH[k] * e, dq = dQ[k], dh1, dq1, dl;
+		if (neutralise1_tangent(kq, tr, H[k] * e, Q[k], dh, dq, &h1, &q1, &den, &xp, &dh1,
+					&dq1, &dl)) {
+			dH[k] = dh1 * e;
+			dQ[k] = dq1;
+			dA[k] += dl * ikq;
+		} else {
+			neutralise1(kq, tr, h, q, &h1, &q1, &den, &xp);
+			double eps = noise_eps(h, q, dh, dq);
+			if (eps > 0) {
+				/* by a difference, perturbed before the clamps
+				 * (a value below zero, a diffusion undershoot,
+				 * has no derivative) */
+				double hp = H[k] * e + eps * dh, qp = Q[k] + eps * dq, h1p, q1p, denp, xpp;
+				neutralise1(kq, tr, hp > 0 ? hp : 0, qp > 0 ? qp : 0, &h1p, &q1p, &denp,
+					    &xpp);
+				dH[k] = (h1p - h1) / eps * e;
+				dQ[k] = (q1p - q1) / eps;
+				dA[k] += ((denp - den) / den + (xpp - xp)) / eps * ikq;
+			}
 		}
 		P[k] *= den;
 		A[k] += xp * ikq;
