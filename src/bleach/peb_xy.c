@@ -62,37 +62,53 @@ static double *heat_factors(int p, double h, double Dt)
 }
 
 /* The circulant kernel of the factors g (heat_factors: already over p):
- * c[j] = sum over m of g[m] cos(2 pi m j / p), stored twice over (c2[k]
- * = c[k mod p], k < 2p) so that a row's product needs no index mod p. */
+ * c[j] = sum over m of g[m] cos(2 pi m j / p), j <= p / 2 (the rest by
+ * symmetry, circ_row). */
 static double *circulant(const double *g, int p)
 {
-	double *c2 = xreallocarray(NULL, 2 * (size_t)p, sizeof *c2);
-	for (int j = 0; j < p; j++) {
+	double *c = xreallocarray(NULL, (size_t)p / 2 + 1, sizeof *c);
+	for (int j = 0; j <= p / 2; j++) {
 		double s = 0;
 		for (int m = 0; m < p; m++)
 			s += g[m] * cos(2 * M_PI * (double)((long)m * j % p) / p);
-		c2[j] = c2[j + p] = s;
+		c[j] = s;
 	}
-	return c2;
+	return c;
 }
 
-/* out[i] = sum over i2 < p of c2[i - i2 + p] a[i2], i < p (a circulant
- * product; c2 the kernel stored twice over): four outputs at a time, each
- * its own running sum in the order of i2 (the same sums, value for value,
- * as one output at a time), so that the loop is bound by its loads and
- * not by a store and a reload per multiply-add. */
-static void circ_row(const double *c2, int p, const double *a, double *out)
+/* The kernel is even (c[k] = c[p - k], the factors are even in the
+ * wavenumber), so a product takes the two values k either side of an
+ * output together, c[k] (a[i - k] + a[i + k]) for k = 1 .. (p - 1) / 2,
+ * and for even p the one value p / 2 away once: half the multiplies of
+ * the plain sum.  Indices wrap modulo p. */
+
+/* out[i] = sum over k of c[k] a[(i - k) mod p], i < p: a copied with
+ * h = p / 2 values wrapped on either side (ext: p + 2 h values), four
+ * outputs at a time, each its own running sum. */
+static void circ_row(const double *c, int p, const double *a, double *out, double *ext)
 {
+	int h = p / 2, odd = p % 2;
+	memcpy(ext, a + p - h, (size_t)h * sizeof *ext);
+	memcpy(ext + h, a, (size_t)p * sizeof *ext);
+	memcpy(ext + h + p, a, (size_t)h * sizeof *ext);
+	const double *e = ext + h;
+	int kmax = odd ? h : h - 1;
 	int i = 0;
 	for (; i + 4 <= p; i += 4) {
-		double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-		const double *c = c2 + i + p;
-		for (int i2 = 0; i2 < p; i2++) {
-			double v = a[i2];
-			s0 += c[-i2] * v;
-			s1 += c[1 - i2] * v;
-			s2 += c[2 - i2] * v;
-			s3 += c[3 - i2] * v;
+		double s0 = c[0] * e[i], s1 = c[0] * e[i + 1], s2 = c[0] * e[i + 2], s3 = c[0] * e[i + 3];
+		for (int k = 1; k <= kmax; k++) {
+			double ck = c[k];
+			s0 += ck * (e[i - k] + e[i + k]);
+			s1 += ck * (e[i + 1 - k] + e[i + 1 + k]);
+			s2 += ck * (e[i + 2 - k] + e[i + 2 + k]);
+			s3 += ck * (e[i + 3 - k] + e[i + 3 + k]);
+		}
+		if (!odd) {
+			double ch = c[h];
+			s0 += ch * e[i + h];
+			s1 += ch * e[i + 1 + h];
+			s2 += ch * e[i + 2 + h];
+			s3 += ch * e[i + 3 + h];
 		}
 		out[i] = s0;
 		out[i + 1] = s1;
@@ -100,31 +116,45 @@ static void circ_row(const double *c2, int p, const double *a, double *out)
 		out[i + 3] = s3;
 	}
 	for (; i < p; i++) {
-		double s0 = 0;
-		for (int i2 = 0; i2 < p; i2++)
-			s0 += c2[i - i2 + p] * a[i2];
+		double s0 = c[0] * e[i];
+		for (int k = 1; k <= kmax; k++)
+			s0 += c[k] * (e[i - k] + e[i + k]);
+		if (!odd)
+			s0 += c[h] * e[i + h];
 		out[i] = s0;
 	}
 }
 
-/* The same along y on whole rows of n values: row j of out = sum over
- * j2 < p of c2[j - j2 + p] row j2 of pl (rows n apart), four values of a
- * row at a time. */
-static void circ_rows(const double *c2, int p, const double *pl, int n, double *out)
+/* The same along y on whole rows of n values: row j of out = sum over k
+ * of c[k] row (j - k) mod p of pl (rows n apart), four values of a row
+ * at a time, each its own running sum over k. */
+static void circ_rows(const double *c, int p, const double *pl, int n, double *out)
 {
+	int h = p / 2, odd = p % 2, kmax = odd ? h : h - 1;
 	for (int j = 0; j < p; j++) {
-		const double *c = c2 + j + p;
+		const double *r0 = pl + (size_t)j * n;
 		double *o = out + (size_t)j * n;
+		/* the rows k before and after j, and p / 2 away for even p */
+		int jh = j + h < p ? j + h : j + h - p;
+		const double *rh = pl + (size_t)jh * n;
 		int i = 0;
 		for (; i + 4 <= n; i += 4) {
-			double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-			for (int j2 = 0; j2 < p; j2++) {
-				const double *r = pl + (size_t)j2 * n + i;
-				double cc = c[-j2];
-				s0 += cc * r[0];
-				s1 += cc * r[1];
-				s2 += cc * r[2];
-				s3 += cc * r[3];
+			double s0 = c[0] * r0[i], s1 = c[0] * r0[i + 1];
+			double s2 = c[0] * r0[i + 2], s3 = c[0] * r0[i + 3];
+			for (int k = 1; k <= kmax; k++) {
+				int jm = j - k >= 0 ? j - k : j - k + p, jp = j + k < p ? j + k : j + k - p;
+				const double *rm = pl + (size_t)jm * n + i, *rp = pl + (size_t)jp * n + i;
+				double ck = c[k];
+				s0 += ck * (rm[0] + rp[0]);
+				s1 += ck * (rm[1] + rp[1]);
+				s2 += ck * (rm[2] + rp[2]);
+				s3 += ck * (rm[3] + rp[3]);
+			}
+			if (!odd) {
+				s0 += c[h] * rh[i];
+				s1 += c[h] * rh[i + 1];
+				s2 += c[h] * rh[i + 2];
+				s3 += c[h] * rh[i + 3];
 			}
 			o[i] = s0;
 			o[i + 1] = s1;
@@ -132,20 +162,28 @@ static void circ_rows(const double *c2, int p, const double *pl, int n, double *
 			o[i + 3] = s3;
 		}
 		for (; i < n; i++) {
-			double s0 = 0;
-			for (int j2 = 0; j2 < p; j2++)
-				s0 += c[-j2] * pl[(size_t)j2 * n + i];
+			double s0 = c[0] * r0[i];
+			for (int k = 1; k <= kmax; k++) {
+				int jm = j - k >= 0 ? j - k : j - k + p, jp = j + k < p ? j + k : j + k - p;
+				s0 += c[k] * (pl[(size_t)jm * n + i] + pl[(size_t)jp * n + i]);
+			}
+			if (!odd)
+				s0 += c[h] * rh[i];
 			o[i] = s0;
 		}
 	}
 }
+
+/* scratch values a worker needs: a plane's product along y (py rows), or
+ * a row's along x and circ_row's wrapped copy (3 nx) */
+#define XY_TMP(nx, ny) ((size_t)((ny) - 1 > 1 ? (ny) - 1 : 1) * (size_t)(nx) + 2 * (size_t)(nx))
 
 struct xy_pass {
 	double *f;
 	int nx, ny;
 	const double *gx, *gy;          /* NULL: that direction is not done */
 	const double *cx, *cy;          /* circulant kernels, or NULL: by FFT */
-	double *tmp;                    /* per worker: max(nx, py nx) */
+	double *tmp;                    /* per worker: XY_TMP(nx, ny) */
 	struct dft dx, dy;
 	double complex *row;            /* per worker: max(px, py) */
 	double complex *work;           /* per worker: nwork */
@@ -161,14 +199,14 @@ static void xy_planes(void *ctx, size_t lo, size_t hi, int worker)
 	int nx = x->nx, ny = x->ny, px = nx - 1, py = ny - 1;
 	double complex *z = x->row + (size_t)worker * (size_t)(px > py ? px : py);
 	double complex *w = x->work + (size_t)worker * x->nwork;
-	double *t = x->tmp + (size_t)worker * (size_t)(py > 1 ? py : 1) * nx;
+	double *t = x->tmp + (size_t)worker * XY_TMP(nx, ny);
 	for (size_t k = lo; k < hi; k++) {
 		double *pl = x->f + k * (size_t)nx * ny;
 		if (x->cx)
 			for (int j = 0; j < ny; j++) {
 				/* out[i] = sum over i2 of c[(i - i2) mod px] a[i2] */
 				double *a = pl + (size_t)j * nx;
-				circ_row(x->cx, px, a, t);
+				circ_row(x->cx, px, a, t, t + nx);
 				memcpy(a, t, (size_t)px * sizeof *t);
 				a[px] = a[0];
 			}
@@ -235,7 +273,7 @@ void peb_diffuse_xy(double *f, int nx, int ny, int nz, double hx, double hy, dou
 		x.cx = circulant(x.gx, px);
 	if (x.gy && py <= PEB_XY_CIRC_MAX)
 		x.cy = circulant(x.gy, py);
-	x.tmp = xreallocarray(NULL, (size_t)nw * (size_t)(py > 1 ? py : 1), (size_t)nx * sizeof *x.tmp);
+	x.tmp = xreallocarray(NULL, (size_t)nw, XY_TMP(nx, ny) * sizeof *x.tmp);
 	if (x.gx && !x.cx) {
 		dft_init(&x.dx, px);
 		x.nwork = dft_work(&x.dx);
