@@ -5,7 +5,8 @@
  * through the library's FFT (any length); a period of at most
  * PEB_XY_CIRC_MAX samples is applied as the same operator written as a
  * circulant matrix (its kernel the inverse transform of the factors,
- * computed here directly), p multiply-adds a point, since a short FFT
+ * computed here directly), p additions and p / 2 + 1 multiplications a
+ * point (the kernel is even), since a short FFT
  * costs mostly its calls: the bake applies this up to a few hundred
  * times, and on examples/car-krf-lines' window (periods 24 and 4) the
  * transforms were a third of the bake.

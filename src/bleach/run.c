@@ -208,11 +208,14 @@ static void car_bake(const struct bleach_input *in, double *M, int nx, int ny, i
 	char what[64];
 	snprintf(what, sizeof what, "%.3g bake points x %d steps", (double)np, n);
 	/* h, q, the m integral, and for a stochastic run their noise, which
-	 * about doubles the work (the full bake: the noisy quencher alone) */
+	 * about doubles the work (the full bake: the noisy quencher alone);
+	 * at order 1 with a quencher the products of the m integral's
+	 * logarithms (peb.c) */
 	int lin = in->stochastic && !in->bake_full;
 	budget_check(input, what, (double)np * n * (1 + lin) *
 		     (T_PEB + peb_react_seconds(&pp, 1, in->peb_time / n)),
-		     (double)np * (3 + 3 * lin + in->bake_full) * sizeof(double));
+		     (double)np * (3 + 3 * lin + in->bake_full + (in->porder == 1 && in->kq > 0)) *
+			     sizeof(double));
 	double change_xy;
 	int nouter = peb_choose_outer(&pp, M, nx, ny, nz, dx, dy, dz, n, 0, &change_xy);
 	/* x-y diffusion at every column step and still not converged: the
