@@ -10,11 +10,14 @@
 # time is the figure); prints the step count bleach chose.
 # Then the bake's cliff cases and the examples with a CA resist, each with
 # this tree's bleach and with the base revision's (CAR_BASE, default
-# 5ab1070: main before the column steps in place, the inline exponential
-# of the order-1 neutralisation, one reaction a step with x-y diffusion
-# every step and the register-blocked circulant x-y products; ed01cc5,
-# before the graded steps, the one-exponential order-1 reaction, the
-# circulant x-y step and the linear-noise bake, shows the rounds before)
+# d3744ef: main before the order-1 products kept for the whole bake, the
+# closed-form derivative of the linear-noise reaction, the even circulant
+# x-y products and the z factors made once a step; 5ab1070, before the
+# column steps in place, the inline exponential of the order-1
+# neutralisation, one reaction a step with x-y diffusion every step and
+# the register-blocked circulant x-y products, and ed01cc5, before the
+# graded steps, the one-exponential order-1 reaction, the circulant x-y
+# step and the linear-noise bake, show the rounds before)
 # exported with git archive and built in a temporary directory, in the
 # same run: CPU seconds old and new, seconds per million bake points per
 # bake minute, and the largest difference of m between the two (each
@@ -58,7 +61,7 @@ else
 	exit 0
 fi
 
-BASE=${CAR_BASE:-5ab1070}
+BASE=${CAR_BASE:-d3744ef}
 old=
 if git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
 	mkdir -p base
