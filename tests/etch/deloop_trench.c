@@ -57,7 +57,8 @@ static struct ratefile *trenches(void)
 	return r;
 }
 
-static void run(double et, double pt)
+/* fm: the refined solve of trenches(), shared by the runs */
+static void run(double et, double pt, const struct fmm *fm)
 {
 	printf("two trenches, %g s (print times every %g s), delooped:\n", et, pt);
 	struct ratefile *r = trenches();
@@ -71,8 +72,6 @@ static void run(double et, double pt)
 	o.check = 0;         /* the mesh checks of tests/etch/deloop.c cost minutes here */
 	struct etch_stats st = {0};
 	struct mesh *m = etch_run(&f, &o, &st);
-	int refine[3] = {REFINE, REFINE, REFINE};
-	struct fmm *fm = fmm_solve(r, refine);
 	long behind = 0, n = 0;
 	double worst = 0;
 	for (size_t i = 0; i < m->nnode; i++) {
@@ -93,14 +92,18 @@ static void run(double et, double pt)
 	check(st.loops >= 1, "loops removed", (double)st.loops, 1);
 	check(left == 0, "crossings left (independent counter)", (double)left, 0);
 	check(behind == 0, "nodes behind the refined front by more than TOL", (double)behind, 0);
-	fmm_free(fm);
 	mesh_free(m);
 	fmt_rate_free(r);
 }
 
 int main(void)
 {
-	run(1.5, 0);
-	run(1.5, 0.75);
+	struct ratefile *r = trenches();
+	int refine[3] = {REFINE, REFINE, REFINE};
+	struct fmm *fm = fmm_solve(r, refine);
+	run(1.5, 0, fm);
+	run(1.5, 0.75, fm);
+	fmm_free(fm);
+	fmt_rate_free(r);
 	return bad;
 }

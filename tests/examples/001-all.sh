@@ -5,6 +5,10 @@
 # one set per print time, its curves.plot.2D, and a dataplot.ps that
 # ghostscript renders (when installed).  Against: the files each run must
 # leave (sample3D(1) FILES), and the print times in the run's own command.
+# An example whose run.sh passes -deloop itself (examples/contact-highna)
+# must also end every etch run loop-free, as 002-deloop.sh checks the
+# others ("0 crossings left" in etch's summary), which spares 002 a second
+# run of it.
 # The checks are tests/lib/examples.sh's; the longest examples (its
 # EXAMPLES_OWN) are tests of their own, 004 and 005, so that the runner
 # spreads them over the cores; this test takes every other 3D example.

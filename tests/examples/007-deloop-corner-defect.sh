@@ -1,5 +1,6 @@
 # examples/corner-defect runs with -deloop loop-free, as 002-deloop.sh
-# checks it (tests/lib/examples.sh, example_deloop): one of the longest
+# checks it (tests/lib/examples.sh, example_deloop: -deloop -last, the
+# final set delooped): one of the longest
 # examples, a test of its own so that the runner can run it beside the
 # others.
 . "$TOP/tests/lib/common.sh"
