@@ -15,16 +15,16 @@ command -v calib >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
 M="-rel 5 -hole 0 0"
-# measured.dat: 4 foci x 3 doses; other.dat: 4 points between them
+# measured.dat: 3 foci x 2 doses; other.dat: 4 points between them
 fem -q -if "$here/mask.in" -bf "$here/hidden.in" -et 60 -method fmm -measure "$M" \
-	-focus -0.6:0.3:0.3 -dose 70,80,90 -d hidden -j "${JOBS:-2}"
+	-focus -0.6,-0.15,0.3 -dose 70,90 -d hidden -j "${JOBS:-2}"
 fem -q -if "$here/mask.in" -bf "$here/hidden.in" -et 60 -method fmm -measure "$M" \
 	-points -0.45:75,-0.15:85,0.15:75,0.15:85 -d hidden-other -j "${JOBS:-2}"
 noise() { # noise "OFFSETS (nm)" fem.dat: focus dose cd + offset, row by row
 	awk -v off="$1" 'BEGIN { split(off, o, " "); print "# focus dose cd (um)" }
 		!/^#/ { k++; printf "%s %s %.4f\n", $1, $2, $3 + o[k] / 1000 }' "$2"
 }
-noise "0.9 -1.2 0.4 1.3 -0.7 -0.8 1.1 -0.3 0.6 -1.4 0.2 -0.1" hidden/fem.dat >measured.dat
+noise "0.9 -1.2 0.4 1.1 -0.7 -0.6" hidden/fem.dat >measured.dat
 noise "-0.5 1.0 0.7 -0.9" hidden-other/fem.dat >other.dat
 
 calib -if "$here/mask.in" -bf "$here/resist.in" -et 60 -data measured.dat -measure "$M" \

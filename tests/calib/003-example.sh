@@ -1,9 +1,10 @@
 # examples/calibrate runs end to end through its README's command as
 # printed, "sh calibrate.sh" (tests/lib/examples.sh, example_readme: fem
-# makes the "measured" CDs from the hidden process, hidden.in, adding fixed
-# offsets of about 1 nm (rms 0.86 nm) for measurement noise; calib fits Mth
-# and n of the start file resist.in to the 12 points and validates on 4
-# others), and calib recovers the hidden values.  Checked:
+# makes the "measured" CDs, 3 foci x 2 doses, from the hidden process,
+# hidden.in, adding fixed offsets of about 1 nm (rms 0.86 nm) for
+# measurement noise; calib fits Mth and n of the start file resist.in to
+# the 6 points and validates on 4 others), and calib recovers the hidden
+# values.  Checked:
 #  - the README's "Calibrate to measured CDs" table is the example's
 #    output: the table rows and the rms line of README.md equal table.txt,
 #    character for character (the simulations are deterministic, so any

@@ -32,14 +32,17 @@ grid nz 31
 IN
 # the data: the same model at Mth 0.5, its CDs as they come
 sed 's/mack 0.1 0.0001 0.502 5/mack 0.1 0.0001 0.5 5/' start.in >truth.in
+# the data are made while the cluster comes up
 fem -q -if m.in -bf truth.in -et 60 -method fmm -focus -0.3,0.3 -dose 80,100 \
-	-measure "-rel 5 -hole 0 0" -d truth -j 2 || fail "fem on the truth failed"
+	-measure "-rel 5 -hole 0 0" -d truth -j 2 2>truth.err &
+truth=$!
+slurm_start
+wait $truth || fail "fem on the truth failed: $(cat truth.err)"
 cp truth/fem.dat meas.dat
 set -- -if m.in -bf start.in -et 60 -data meas.dat -measure "-rel 5 -hole 0 0" \
 	-free "develop 3 0.3:0.7" -q
 calib "$@" -j 2 -d local 2>local.err &
 local=$!
-slurm_start
 calib "$@" -slurm -d cluster 2>cluster.err || fail "calib -slurm failed: $(cat cluster.err)"
 wait $local || fail "local calib failed: $(cat local.err)"
 awk '$2 == "points" { n = $9 } END { exit !(n >= 2) }' local/calib.dat || fail "the fit took under two iterations"

@@ -28,9 +28,11 @@ M
 sed 's/^grid .*/grid nz 60/' "$E/resist.in" >resist.in
 set -- -if "$D/mask.in" -bf "$D/resist.in" -et 60 -dose 80,100 -focus -0.5,0.5 \
 	-measure "-rel 10 -hole 0 0" -q
-fem "$@" -j 2 -d local || fail "local sweep failed"
-
+# the local sweep runs while the cluster comes up
+fem "$@" -j 2 -d local 2>local.err &
+local=$!
 slurm_start
+wait $local || fail "local sweep failed: $(cat local.err)"
 fem "$@" -d cluster -slurm -chunk 2 || fail "fem -slurm failed"
 [ -x cluster/submit.sh ] && [ -s cluster/fem.sbatch ] || fail "submit.sh or fem.sbatch missing"
 grep -q '^#SBATCH --array=0-1$' cluster/fem.sbatch || fail "4 points in chunks of 2: expected --array=0-1"

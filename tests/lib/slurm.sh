@@ -13,7 +13,15 @@ slurm_port() { # slurm_port N: a free TCP port, from the test's pid
 }
 slurm_stop() {
 	for _p in $slurm_pids; do kill "$_p" 2>/dev/null; done
-	sleep 0.5
+	# up to 0.5 s for the daemons to end (polled), then SIGKILL
+	_i=0
+	while [ $_i -lt 10 ]; do
+		_alive=""
+		for _p in $slurm_pids; do kill -0 "$_p" 2>/dev/null && _alive=1; done
+		[ -n "$_alive" ] || break
+		sleep 0.05
+		_i=$((_i + 1))
+	done
 	for _p in $slurm_pids; do kill -9 "$_p" 2>/dev/null; done
 	return 0
 }

@@ -6,8 +6,10 @@
 # filled), is under 1 MB (a polygon per triangle wrote 18 MB), is the
 # same byte for byte when drawn again, that its SVG embeds one PNG (under
 # 2 MB), and that ghostscript renders it;
-# -vector draws the polygons instead (more than 100000 fills), and a
-# coarse mesh (a 20 x 20 grid) stays vector by default.  -window 0 1 0 1
+# -vector draws the polygons instead (more than 100000 fills; on a 200 x
+# 200 grid, 2.4 x 2.4 points a cell, still drawn as a picture by default,
+# as checked: the 300 grid's 57 MB of polygons cost 3 s, this one's 0.9),
+# and a coarse mesh (a 20 x 20 grid) stays vector by default.  -window 0 1 0 1
 # cuts the sets to that square: its x ticks end at 1 (the data's at 3),
 # a window holding none of the data is an empty page, not an error, and
 # an empty window is a usage error.  -window auto draws the central 6 x 6
@@ -36,7 +38,10 @@ same fine.ps again.ps
 [ "$(grep -c 'xlink:href="data:image/png;base64,iVBORw0KGgo' fine.svg)" -eq 1 ] ||
 	fail "fine mesh: the SVG holds no PNG picture"
 [ "$(wc -c <fine.svg)" -lt 2000000 ] || fail "fine mesh: the SVG has $(wc -c <fine.svg) bytes"
-pdraw -noplot -h -vector -psfile vec.ps fine.3D </dev/null || fail "pdraw -h -vector"
+mesh 200 >mid.3D
+pdraw -noplot -h -psfile mid.ps mid.3D </dev/null || fail "pdraw -h mid"
+[ "$(grep -c 'RunLengthDecode filter image' mid.ps)" -eq 1 ] || fail "the 200 x 200 mesh: not a picture by default"
+pdraw -noplot -h -vector -psfile vec.ps mid.3D </dev/null || fail "pdraw -h -vector"
 [ "$(grep -c ' F' vec.ps)" -gt 100000 ] || fail "-vector: the polygons are not drawn"
 ! grep -q RunLengthDecode vec.ps || fail "-vector drew a picture"
 pdraw -noplot -h -psfile coarse.ps coarse.3D </dev/null || fail "pdraw -h coarse"
