@@ -215,6 +215,16 @@ example_figures() {
 		_l=$(awk '$2 == "ler" { print 1000 * ($4 + $6) / 2 }' "$_o/d60/ler.txt")
 		readme_figure euv-lines "LER 1.5 nm" 1.5 "$_l" 0.05 ;;
 	arf-immersion-lines)
+		# the image stacks' mid-depth contrast, and the beams' angle in the
+		# resist from the stack's wavelength and index and the window's one
+		# period (tests/lib/contrast.awk)
+		set -- $(awk -v D=0.05 -f "$TOP/tests/lib/contrast.awk" "$_o/te/image.stack") \
+			$(awk -v D=0.05 -f "$TOP/tests/lib/contrast.awk" "$_o/tm/image.stack")
+		[ $# -eq 6 ] || fail "examples/arf-immersion-lines: out/te or out/tm image.stack unreadable"
+		readme_figure arf-immersion-lines "cross at about 39 degrees" 39 "$2" 0.5
+		readme_figure arf-immersion-lines "|cos 2 theta| ~ 0.2" 0.2 "$3" 0.05
+		readme_figure arf-immersion-lines "contrast is about 0.84 in TE" 0.84 "$1" 0.005
+		readme_figure arf-immersion-lines "and 0.06 in TM" 0.06 "$4" 0.005
 		# cd.txt: the resist line's width at 10, 50, 90 % (measure -line)
 		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/te/cd.txt")
 		readme_figure arf-immersion-lines "TE prints a line of about 45 nm" 45 "$_w" 0.5
