@@ -170,7 +170,7 @@ example_deloop() {
 # readme_figure NAME TEXT WANT GOT TOL: examples/NAME/README still quotes
 # TEXT (the words that carry the figure, as printed), and GOT, the run's
 # value in the README's unit, is WANT within TOL, half the last digit the
-# README prints (26.3 nm: 0.05).  A README changed without its check, or
+# README prints (22.7 nm: 0.05).  A README changed without its check, or
 # a result that moved from the README's figure, fails naming both.
 readme_figure() {
 	grep -qF -- "$2" "$TOP/examples/$1/README" ||
