@@ -9,6 +9,11 @@
 # must also end every etch run loop-free, as 002-deloop.sh checks the
 # others ("0 crossings left" in etch's summary), which spares 002 a second
 # run of it.
+# Every figure an example's README quotes about its result is that run's
+# output at the README's precision (example_figures: the EUV examples' CDs,
+# LER/LWR/correlation length, LCDU and counts, the ArF immersion example's
+# contrasts and widths, contact-highna's CD table), read from the files
+# the README run leaves, without another run.
 # The checks are tests/lib/examples.sh's; the longest examples (its
 # EXAMPLES_OWN) are tests of their own, 004 and 005, so that the runner
 # spreads them over the cores; this test takes every other 3D example.

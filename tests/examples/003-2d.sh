@@ -9,10 +9,16 @@
 # Figure 9.5's point, against the thesis' text (9.2.2): at the defect's
 # centre (2.6 um along either cut) the north-south cut has cleared the
 # resist by 15 s and the east-west cut has not (at least 0.002 um left;
-# 0.0075 measured, the thesis ~0.1); re-developed every 0.5 s from the
-# same rate arrays every 0.25 s, the north-south cut clears at least 1 s
-# before the east-west one (13.75 s against 15.25 s measured; 13.7 and
-# 15.2 s by fmm too, and 13-14 s in 3D by etch -method fmm).
+# 0.0075 measured, the thesis ~0.1); re-developed from the same rate
+# arrays with a print every 0.05 s, the north-south cut clears at least
+# 1 s before the east-west one.  The README's figures of that point, at
+# its precision (tests/lib/examples.sh, readme_figure): 0.0075 um left
+# east-west at 15 s (within 0.00005), the centre cleared (first print
+# within 0.001 um of the substrate) at 13.7 s north-south and 15.2 s
+# east-west (within 0.05 s), by etch2d -method fmm too within 0.1 s
+# ("raystring and fmm agree to 0.1 s").  Its 3D figure (13-14 s by etch
+# -method fmm on examples/defect's rate array) needs a run make check
+# does not make.
 # Figure 3.5's point (3.3): at 15 s on the Figure 2.3 rate Dill's cells
 # (200 x 100) open the lowest standing wave wider than the string, by
 # 0.02 to 0.07 um a side (0.04 measured; the thesis: about 0.05 um), and
@@ -42,14 +48,21 @@ awk -v z="$ns" 'BEGIN { exit !(z != "" && z <= -0.699) }' ||
 	fail "Figure 9.5: north-south resist top at the defect at 15 s: $ns um, want cleared (-0.7)"
 awk -v z="$ew" 'BEGIN { exit !(z != "" && z >= -0.698) }' ||
 	fail "Figure 9.5: east-west resist top at the defect at 15 s: $ew um, want resist left (above -0.698)"
-clears() {   # the first time (s) the centre is down to the substrate
-	etch2d -et 20 -pt 0.25 -o "$1.fine.plot" "defect-cutlines/$1/rval.2D.binary" || fail "etch2d $1"
-	awk -v X=2.6 -f "$ZAT" "$1.fine.plot" | awk '$2 != "none" && $2 <= -0.699 { print ($1 + 1) * 0.25; exit }'
+readme_figure defect-cutlines "at 15 s the east-west cut leaves 0.0075 um" 0.0075 \
+	"$(awk -v z="$ew" 'BEGIN { if (z != "") printf "%.6f", z + 0.7 }')" 0.00005
+clears() {   # clears CUT [METHOD]: the first time (s) the centre is down to the substrate
+	etch2d ${2:+-method $2} -et 20 -pt 0.05 -o "$1$2.fine.plot" "defect-cutlines/$1/rval.2D.binary" ||
+		fail "etch2d $1 $2"
+	awk -v X=2.6 -f "$ZAT" "$1$2.fine.plot" | awk '$2 != "none" && $2 <= -0.699 { print ($1 + 1) * 0.05; exit }'
 }
 tns=$(clears north-south)
 tew=$(clears east-west)
 awk -v a="$tns" -v b="$tew" 'BEGIN { exit !(a != "" && b != "" && a + 1 <= b) }' ||
 	fail "Figure 9.5: the defect's centre clears at ${tns:-never} s (north-south), ${tew:-never} s (east-west): want north-south 1 s sooner"
+readme_figure defect-cutlines "clears at 13.7 s north-south" 13.7 "$tns" 0.05
+readme_figure defect-cutlines "and 15.2 s east-west" 15.2 "$tew" 0.05
+readme_figure defect-cutlines "raystring and fmm agree to 0.1 s" 13.7 "$(clears north-south fmm)" 0.1
+readme_figure defect-cutlines "raystring and fmm agree to 0.1 s" 15.2 "$(clears east-west fmm)" 0.1
 first() { awk 'BEGIN { RS = "" } NR == 1' "$1"; }
 zb=$(first algorithms/table10.1-fmm.plot | awk 'NF == 2 && (m == "" || $2 < m) { m = $2 } END { print m }')
 hw() {

@@ -95,6 +95,7 @@ example_readme() {
 # not run it a second time.
 example_all() {
 	example_readme "$1"
+	example_figures "$1"
 	if example_delooped "$1"; then
 		deloop_log "$1" "$1.log"
 	fi
@@ -164,4 +165,90 @@ example_deloop() {
 	fi
 	OUT=$PWD/$1 sh "$_run" -deloop -last >"$1.log" 2>&1 || fail "example $1 -deloop failed: $(tail -n 3 "$1.log")"
 	deloop_log "$1" "$1.log"
+}
+
+# readme_figure NAME TEXT WANT GOT TOL: examples/NAME/README still quotes
+# TEXT (the words that carry the figure, as printed), and GOT, the run's
+# value in the README's unit, is WANT within TOL, half the last digit the
+# README prints (22.7 nm: 0.05).  A README changed without its check, or
+# a result that moved from the README's figure, fails naming both.
+readme_figure() {
+	grep -qF -- "$2" "$TOP/examples/$1/README" ||
+		fail "examples/$1/README no longer quotes \"$2\" (tests/lib/examples.sh holds it)"
+	awk -v a="$4" -v b="$3" -v t="$5" 'BEGIN { d = a - b; if (d < 0) d = -d
+		exit !(a != "" && d <= t) }' ||
+		fail "examples/$1/README quotes \"$2\" ($3), the run gives ${4:-nothing}"
+	echo "$1: \"$2\": $4"
+}
+
+# example_figures NAME: every figure examples/NAME/README quotes about a
+# result of its README run is that run's output (read from the files the
+# run leaves in tree/examples/NAME/out; nothing is run again), at the
+# README's precision (readme_figure).  Figures of runs that make check
+# does not make (examples/array40's 40 um array, contact-highna's single
+# aerial image) and the examples' inputs are not held here.
+example_figures() {
+	_o=tree/examples/$1/out
+	case $1 in
+	euv-contacts)
+		# run.sh's summary line: N holes of 25, mean diameter D um, LCDU
+		# (3 sigma) L um; P smaller pockets
+		_s=$(grep '^[0-9]* holes of 25, mean diameter' "$1.log") ||
+			fail "examples/$1: no summary line in the run's output"
+		set -- $(echo "$_s" | awk '{ print $1, 1000 * $7, 1000 * $12, $14 }')
+		readme_figure euv-contacts "25 holes' mean diameter" 25 "$1" 0
+		readme_figure euv-contacts "(seed 1: 22.7 nm" 22.7 "$2" 0.05
+		readme_figure euv-contacts "22.7 nm, 4.8 nm)" 4.8 "$3" 0.05
+		readme_figure euv-contacts "besides them (3)" 3 "$4" 0 ;;
+	euv-lines)
+		# cd.txt: measure's line width at 10, 50, 90 %; ler.txt: measure -ler
+		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/d30/cd.txt")
+		readme_figure euv-lines "prints at about 19 nm" 19 "$_w" 0.5
+		_l=$(awk '$2 == "ler" { print 1000 * ($4 + $6) / 2 }' "$_o/d30/ler.txt")
+		readme_figure euv-lines "LER about 3.7 nm 3 sigma" 3.7 "$_l" 0.05
+		_l=$(awk '$2 == "lwr" { print 1000 * $3 }' "$_o/d30/ler.txt")
+		readme_figure euv-lines "LWR 5.5 nm" 5.5 "$_l" 0.05
+		_l=$(awk '$2 == "corr_length" { print 1000 * $3 }' "$_o/d30/ler.txt")
+		readme_figure euv-lines "correlation length 5.1 nm" 5.1 "$_l" 0.05
+		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/d60/cd.txt")
+		readme_figure euv-lines "over-exposed to about 4 nm" 4 "$_w" 0.5
+		_l=$(awk '$2 == "ler" { print 1000 * ($4 + $6) / 2 }' "$_o/d60/ler.txt")
+		readme_figure euv-lines "LER 1.5 nm" 1.5 "$_l" 0.05 ;;
+	arf-immersion-lines)
+		# the image stacks' mid-depth contrast, and the beams' angle in the
+		# resist from the stack's wavelength and index and the window's one
+		# period (tests/lib/contrast.awk)
+		set -- $(awk -v D=0.05 -f "$TOP/tests/lib/contrast.awk" "$_o/te/image.stack") \
+			$(awk -v D=0.05 -f "$TOP/tests/lib/contrast.awk" "$_o/tm/image.stack")
+		[ $# -eq 6 ] || fail "examples/arf-immersion-lines: out/te or out/tm image.stack unreadable"
+		readme_figure arf-immersion-lines "cross at about 39 degrees" 39 "$2" 0.5
+		readme_figure arf-immersion-lines "|cos 2 theta| ~ 0.2" 0.2 "$3" 0.05
+		readme_figure arf-immersion-lines "contrast is about 0.84 in TE" 0.84 "$1" 0.005
+		readme_figure arf-immersion-lines "and 0.06 in TM" 0.06 "$4" 0.005
+		# cd.txt: the resist line's width at 10, 50, 90 % (measure -line)
+		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/te/cd.txt")
+		readme_figure arf-immersion-lines "TE prints a line of about 45 nm" 45 "$_w" 0.5
+		# TM does not resolve: at mid-height the resist spans the whole
+		# 90 nm period and the film never clears to the substrate
+		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/tm/cd.txt")
+		readme_figure arf-immersion-lines "TM does not resolve" 90 "$_w" 0.5
+		grep -q '^# cleared no' "$_o/tm/cd.txt" ||
+			fail "examples/arf-immersion-lines/README: \"TM does not resolve\", but the TM run clears" ;;
+	contact-highna)
+		# cd.txt: the hole's CD at 5, 50 and 95 % of the thickness
+		for _d in -0.3 0.3; do
+			set -- $(awk '!/^#/ { printf " %s", $2 }' "$_o/defocus$_d/cd.txt")
+			[ $# -eq 3 ] || fail "examples/contact-highna: out/defocus$_d/cd.txt has not 3 CDs"
+			case $_d in
+			-0.3) readme_figure contact-highna "(defocus -0.3) its bottom CD is 0.55 um" 0.55 "$1" 0.005
+				readme_figure contact-highna "0.547, 0.583, 0.615 um at defocus -0.3" 0.547 "$1" 0.0005
+				readme_figure contact-highna "0.547, 0.583, 0.615 um at defocus -0.3" 0.583 "$2" 0.0005
+				readme_figure contact-highna "0.547, 0.583, 0.615 um at defocus -0.3" 0.615 "$3" 0.0005 ;;
+			0.3) readme_figure contact-highna "(+0.3) only 0.44 um" 0.44 "$1" 0.005
+				readme_figure contact-highna "0.441, 0.561, 0.614 um at +0.3" 0.441 "$1" 0.0005
+				readme_figure contact-highna "0.441, 0.561, 0.614 um at +0.3" 0.561 "$2" 0.0005
+				readme_figure contact-highna "0.441, 0.561, 0.614 um at +0.3" 0.614 "$3" 0.0005 ;;
+			esac
+		done ;;
+	esac
 }
