@@ -23,17 +23,33 @@
  * The slowness.  A difference along an axis stands for the slowness
  * over the cells it spans, not at the node: (T - T1)/h for the mean of
  * 1/R over the cell, (3T - 4T1 + T2)/(2h) for 3/2 of it minus 1/2 of the
- * next cell's.  Along a grid line the (trilinear) rate is linear, so the
- * mean is (ln Ra - ln Rb)/(Ra - Rb) exactly; the axis' coefficient is
- * scaled by (f/mean)^2, f the node's slowness, so that the quadratic
- * keeps f on its right-hand side.  In one dimension the solve is then
- * exact for the piecewise-linear rate, whatever its contrast; the
- * published scheme (f at the node, fmm_solve_nodal) is second order
- * only where R is smooth on the grid scale, and where the rate changes
- * several-fold within a cell (a resist at the edge of the image) puts
- * the front behind: on the baked contact of examples/contact at 60 s,
- * 0.12 of an x-y cell on average.  The slowness at the nodes of a
- * refined grid comes from the rate grid by trilinear interpolation.
+ * next cell's.  The axis' coefficient is scaled by (f/mean)^2, f the
+ * node's slowness, so that the quadratic keeps f on its right-hand side.
+ * In one dimension the solve is then exact for the rate the cells
+ * integrate, whatever its contrast; the published scheme (f at the node,
+ * fmm_solve_nodal) is second order only where R is smooth on the grid
+ * scale, and where the rate changes several-fold within a cell (a resist
+ * at the edge of the image) puts the front behind: on the baked contact
+ * of examples/contact at 60 s, 0.12 of an x-y cell on average.
+ *
+ * The rate between nodes.  A rate file samples a smooth field, so the
+ * rate along a grid line is taken as linear between two nodes plus the
+ * curvature their neighbours show, R = Rlin - (D/2) u(1 - u) with D the
+ * second difference (rate_between), limited (cell_curvature: none where
+ * the neighbours' second differences differ in sign, as at a sharp edge
+ * or a standing wave sampled too coarsely, else the smaller, and the
+ * result kept in the neighbours' range).  The mean of 1/R over a cell is
+ * the linear rate's, (ln Ra - ln Rb)/(Ra - Rb) exactly, plus about
+ * D/(12 Ra Rb) to first order in D (cell_slowness, bow_weight).  Taken
+ * as linear, the rate made the front run ahead where it is convex and
+ * behind where it is concave, by an error of every cell crossed that no
+ * refinement removed: 0.085 of a z cell on average on a Gaussian focus,
+ * 0.016 at the bottom of an exponential attenuation
+ * (tests/etch/fmm_smooth.c).  The rates at the nodes of a refined grid
+ * are the same reconstruction, axis by axis (refine_rates), so that
+ * refining converges to the sampled field.  fmm_solve_linear and the
+ * lazy solve of deloop's classifier keep the rate linear (trilinear at a
+ * refined grid's nodes, rate_at), as the ray-string engine takes it.
  */
 #include "fmm.h"
 #include "util.h"
@@ -70,6 +86,7 @@ struct solver {
 	double *slow;           /* 1/R per node, s/um; INFINITY where R ~ 0 */
 	unsigned char *state;
 	int nodal;              /* fmm_solve_nodal: the node's own slowness */
+	int linear;             /* the rate linear between nodes (fmm_solve_linear) */
 	int32_t *pos;           /* heap position of TRIAL nodes */
 	struct heap_ent *heap;
 	size_t nheap;
@@ -155,6 +172,105 @@ static double path_slowness(double sa, double sb)
 	return lr / (ra - rb);
 }
 
+/* The curvature of the rate over the cell between nodes of rates ra and
+ * rb, as the second difference h^2 R'' (um/s), from the second
+ * differences da at a and db at b (NAN where a node has no neighbour
+ * beyond it: the other one stands in).  Limited: minmod (0 where they
+ * differ in sign, as at a sharp edge or a standing wave sampled too
+ * coarsely, else the smaller), and at most the smaller end rate, so the
+ * reconstruction R = Rlin - (D/2) u(1 - u) stays positive (its middle
+ * moves by D/8) and the cell slowness finite. */
+static double cell_curvature(double da, double db, double ra, double rb)
+{
+	if (isnan(da))
+		da = db;
+	if (isnan(db))
+		db = da;
+	if (!(da * db > 0))
+		return 0;
+	double d = fabs(da) < fabs(db) ? da : db, cap = fmax(0, fmin(ra, rb));
+	return fmin(fmax(d, -cap), cap);
+}
+
+/* The limited curvature of the cell between v[1] and v[2] from the four
+ * rates v[0..3] along a grid line (v[0], v[3] NAN where the line ends;
+ * 0 if both do), and the range lo..hi of those present: the
+ * reconstruction is clamped to it, so it never leaves the neighbours'
+ * range (a smooth extremum between two nodes may rise above both). */
+static double line_curvature(const double v[4], double *lo, double *hi)
+{
+	*lo = fmin(v[1], v[2]);
+	*hi = fmax(v[1], v[2]);
+	for (int q = 0; q < 4; q += 3)
+		if (!isnan(v[q])) {
+			*lo = fmin(*lo, v[q]);
+			*hi = fmax(*hi, v[q]);
+		}
+	double da = isnan(v[0]) ? NAN : v[0] - 2 * v[1] + v[2];
+	double db = isnan(v[3]) ? NAN : v[1] - 2 * v[2] + v[3];
+	return isnan(da) && isnan(db) ? 0 : cell_curvature(da, db, v[1], v[2]);
+}
+
+/* The rate reconstructed at fraction u of the cell between v[1] and
+ * v[2] (line_curvature's four rates): linear plus the limited curvature,
+ * R = Rlin - (D/2) u(1 - u), clamped to the neighbours' range; the model
+ * whose mean slowness cell_slowness takes. */
+static double rate_between(const double v[4], double u)
+{
+	double lo, hi, d = line_curvature(v, &lo, &hi);
+	return fmin(fmax(v[1] + (v[2] - v[1]) * u - 0.5 * d * u * (1 - u), lo), hi);
+}
+
+/* The mean slowness the bow -(D/2) u(1 - u) adds to the linear rate
+ * from ra to rb, per unit D/2, to first order: the integral over the
+ * cell of u(1 - u)/Rlin(u)^2, ((ra + rb) ln(rb/ra) - 2 (rb - ra)) /
+ * (rb - ra)^3, given lr = ln(ra/rb); 1/(6 ra rb) where the rates nearly
+ * agree (the closed form cancels there; the two differ by
+ * (rb - ra)^2/ra^2 relative). */
+static double bow_weight(double ra, double rb, double lr)
+{
+	double dr = rb - ra;
+	if (fabs(dr) < 1e-3 * fmax(ra, rb))
+		return 1 / (6 * ra * rb);
+	return (-(ra + rb) * lr - 2 * dr) / (dr * dr * dr);
+}
+
+static double node_rate(const struct solver *s, size_t m)
+{
+	return s->slow[m] < INFINITY ? 1 / s->slow[m] : 0;
+}
+
+/* The mean slowness over the cell from node a (coordinate ca) to its
+ * neighbour a + o (coordinate ca + dir) on an axis of hi + 1 nodes.  The
+ * rate file samples a smooth field, so the rate between the nodes is
+ * reconstructed as linear plus the limited curvature D (rate_between);
+ * to first order in D its mean slowness is that of the linear rate
+ * (path_slowness, exact) plus (D/2) bow_weight (D/(12 Ra Rb) where Ra
+ * and Rb are close), kept within the slownesses of the neighbours'
+ * range.  Taking the rate as linear instead puts a front ahead where the
+ * rate is convex and behind where it is concave, by an error of the cell
+ * that no refinement of the same nodes removes (tests/etch/fmm_smooth.c). */
+static double cell_slowness(const struct solver *s, size_t a, ptrdiff_t o, int ca, int dir,
+			    int hi)
+{
+	size_t b = (size_t)((ptrdiff_t)a + o);
+	double f = path_slowness(s->slow[a], s->slow[b]);
+	if (s->nodal || s->linear || !(f < INFINITY))
+		return f;
+	int cp = ca - dir, cn = ca + 2 * dir;
+	double v[4] = {cp >= 0 && cp <= hi ? node_rate(s, (size_t)((ptrdiff_t)a - o)) : NAN,
+		       1 / s->slow[a], 1 / s->slow[b],
+		       cn >= 0 && cn <= hi ? node_rate(s, (size_t)((ptrdiff_t)b + o)) : NAN};
+	double rlo, rhi, d = line_curvature(v, &rlo, &rhi);
+	if (d == 0)
+		return f;
+	/* ln(Ra/Rb) from the linear mean f = ln(Ra/Rb)/(Ra - Rb), without a
+	 * second logarithm (where Ra and Rb nearly agree bow_weight does not
+	 * read it) */
+	f += 0.5 * d * bow_weight(v[1], v[2], f * (v[1] - v[2]));
+	return rlo > 0 ? fmin(fmax(f, 1 / rhi), 1 / rlo) : fmax(f, 1 / rhi);
+}
+
 /* The upwind update of node n at grid position c (see the note above). */
 static double update(const struct solver *s, size_t n, const int c[3])
 {
@@ -181,10 +297,11 @@ static double update(const struct solver *s, size_t n, const int c[3])
 		/* the slowness the difference stands for: the mean over the
 		 * cell (first order), or the second-order combination of the
 		 * two cells' means, in place of the node's own */
-		double f1 = path_slowness(s->slow[n], s->slow[n + o]), f = f1;
+		int dir = o > 0 ? 1 : -1;
+		double f1 = cell_slowness(s, n, o, c[d], dir, hi), f = f1;
 		double aa, bb;
 		if (t2 <= t1 &&
-		    (f = 0.5 * (3 * f1 - path_slowness(s->slow[n + o], s->slow[n + 2 * o]))) > 0) {
+		    (f = 0.5 * (3 * f1 - cell_slowness(s, n + o, o, c[d] + dir, dir, hi))) > 0) {
 			aa = s->a2[d];
 			bb = (4 * t1 - t2) / 3;
 		} else {
@@ -244,36 +361,6 @@ static void coords(const struct solver *s, size_t n, int c[3])
 	c[2] = (int)(r / (size_t)s->n[1]);
 }
 
-/* Trilinear interpolation of the rate at refined node (i, j, k). */
-static double rate_at(const struct ratefile *r, const int ref[3], const int c[3])
-{
-	const double *v = fmt_rate_values(r);
-	int nr[3] = {r->nx, r->ny, r->nz};
-	int lo[3];
-	double w[3];
-	for (int d = 0; d < 3; d++) {
-		lo[d] = c[d] / ref[d];
-		w[d] = (double)(c[d] % ref[d]) / ref[d];
-		if (lo[d] >= nr[d] - 1) {   /* the far face itself */
-			lo[d] = nr[d] - 1;
-			w[d] = 0;
-		}
-	}
-	double sum = 0;
-	for (int q = 0; q < 8; q++) {
-		int e[3] = {q & 1, (q >> 1) & 1, (q >> 2) & 1};
-		double wq = 1;
-		int idx[3];
-		for (int d = 0; d < 3; d++) {
-			wq *= e[d] ? w[d] : 1 - w[d];
-			idx[d] = lo[d] + (e[d] && w[d] > 0);
-		}
-		if (wq > 0)
-			sum += wq * v[fmt_rate_index(r, idx[0], idx[1], idx[2])];
-	}
-	return sum;
-}
-
 static double slowness(double rate)
 {
 	return rate >= FMM_RATE_FLOOR ? 1 / rate : INFINITY;
@@ -309,8 +396,82 @@ static double rate_point(const struct ratefile *r, const double p[3])
 	return sum;
 }
 
-static struct fmm *setup(const struct ratefile *r, const int refine[3], struct solver *s)
+/* Trilinear interpolation of the rate at refined node (i, j, k). */
+static double rate_at(const struct ratefile *r, const int ref[3], const int c[3])
 {
+	const double *v = fmt_rate_values(r);
+	int nr[3] = {r->nx, r->ny, r->nz};
+	int lo[3];
+	double w[3];
+	for (int d = 0; d < 3; d++) {
+		lo[d] = c[d] / ref[d];
+		w[d] = (double)(c[d] % ref[d]) / ref[d];
+		if (lo[d] >= nr[d] - 1) {   /* the far face itself */
+			lo[d] = nr[d] - 1;
+			w[d] = 0;
+		}
+	}
+	double sum = 0;
+	for (int q = 0; q < 8; q++) {
+		int e[3] = {q & 1, (q >> 1) & 1, (q >> 2) & 1};
+		double wq = 1;
+		int idx[3];
+		for (int d = 0; d < 3; d++) {
+			wq *= e[d] ? w[d] : 1 - w[d];
+			idx[d] = lo[d] + (e[d] && w[d] > 0);
+		}
+		if (wq > 0)
+			sum += wq * v[fmt_rate_index(r, idx[0], idx[1], idx[2])];
+	}
+	return sum;
+}
+
+/* The rates at the nodes of a refined grid, into s->slow: the rate-grid
+ * nodes' own, and between them the reconstruction of rate_between, axis
+ * by axis (x along the rate grid's lines, then y through those, then z:
+ * the tensor product, trilinear where no curvature is taken). */
+static void refine_rates(const struct ratefile *r, const int ref[3], struct solver *s)
+{
+	const double *v = fmt_rate_values(r);
+	int c[3];
+	for (c[2] = 0; c[2] < r->nz; c[2]++)
+		for (c[1] = 0; c[1] < r->ny; c[1]++)
+			for (c[0] = 0; c[0] < r->nx; c[0]++)
+				s->slow[(size_t)c[0] * ref[0] + (size_t)c[1] * ref[1] * s->stride[1] +
+					(size_t)c[2] * ref[2] * s->stride[2]] =
+					v[fmt_rate_index(r, c[0], c[1], c[2])];
+	for (int d = 0; d < 3; d++) {
+		if (ref[d] == 1)
+			continue;
+		int nc = (s->n[d] - 1) / ref[d] + 1;
+		size_t n = 0;
+		for (c[2] = 0; c[2] < s->n[2]; c[2]++)
+			for (c[1] = 0; c[1] < s->n[1]; c[1]++)
+				for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++) {
+					/* filled so far: every node along the axes
+					 * before d, the rate grid's along the others */
+					int skip = c[d] % ref[d] == 0;
+					for (int e = d + 1; e < 3; e++)
+						skip |= c[e] % ref[e] != 0;
+					if (skip)
+						continue;
+					int lo = c[d] / ref[d];
+					double w[4];
+					for (int q = 0; q < 4; q++) {
+						int k = lo - 1 + q;
+						w[q] = k < 0 || k >= nc ? NAN
+							: s->slow[(ptrdiff_t)n + (ptrdiff_t)(k * ref[d] - c[d]) *
+										   s->stride[d]];
+					}
+					s->slow[n] = rate_between(w, (double)(c[d] % ref[d]) / ref[d]);
+				}
+	}
+}
+
+static struct fmm *setup(const struct ratefile *r, const int refine[3], int linear,
+			 struct solver *s)
+{
+	s->linear = linear;
 	struct fmm *f = xcalloc(1, sizeof *f);
 	int nr[3] = {r->nx, r->ny, r->nz};
 	const double *b = &r->xmin;
@@ -350,12 +511,18 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], struct s
 			s->slow[n] = slowness(v[n]);
 		return f;
 	}
-	size_t n = 0;
-	int c[3];
-	for (c[2] = 0; c[2] < s->n[2]; c[2]++)
-		for (c[1] = 0; c[1] < s->n[1]; c[1]++)
-			for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++)
-				s->slow[n] = slowness(rate_at(r, ref, c));
+	if (linear) {
+		size_t n = 0;
+		int c[3];
+		for (c[2] = 0; c[2] < s->n[2]; c[2]++)
+			for (c[1] = 0; c[1] < s->n[1]; c[1]++)
+				for (c[0] = 0; c[0] < s->n[0]; c[0]++, n++)
+					s->slow[n] = slowness(rate_at(r, ref, c));
+		return f;
+	}
+	refine_rates(r, ref, s);
+	for (size_t n = 0; n < total; n++)
+		s->slow[n] = slowness(s->slow[n]);
 	return f;
 }
 
@@ -410,10 +577,11 @@ static void start_top(struct fmm *f, struct solver *s)
 	}
 }
 
-static struct fmm *solve_top(const struct ratefile *r, const int refine[3], int nodal)
+static struct fmm *solve_top(const struct ratefile *r, const int refine[3], int nodal,
+			     int linear)
 {
 	struct solver s;
-	struct fmm *f = setup(r, refine, &s);
+	struct fmm *f = setup(r, refine, linear, &s);
 	s.nodal = nodal;
 	start_top(f, &s);
 	march(f, &s);
@@ -422,12 +590,17 @@ static struct fmm *solve_top(const struct ratefile *r, const int refine[3], int 
 
 struct fmm *fmm_solve(const struct ratefile *r, const int refine[3])
 {
-	return solve_top(r, refine, 0);
+	return solve_top(r, refine, 0, 0);
+}
+
+struct fmm *fmm_solve_linear(const struct ratefile *r, const int refine[3])
+{
+	return solve_top(r, refine, 0, 1);
 }
 
 struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3])
 {
-	return solve_top(r, refine, 1);
+	return solve_top(r, refine, 1, 0);
 }
 
 /* The sources of a solve from points: the nodes within SEED_CELLS of
@@ -469,7 +642,7 @@ struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 			     const double *p, int npts)
 {
 	struct solver s;
-	struct fmm *f = setup(r, refine, &s);
+	struct fmm *f = setup(r, refine, 0, &s);
 	s.nodal = 0;
 	start_points(r, f, &s, p, npts);
 	march(f, &s);
@@ -485,7 +658,7 @@ struct fmm *fmm_solve_lazy(const struct ratefile *r, const int refine[3],
 			   const double *p, int npts)
 {
 	struct fmm_march *mr = xcalloc(1, sizeof *mr);
-	struct fmm *f = setup(r, refine, &mr->s);
+	struct fmm *f = setup(r, refine, 1, &mr->s);
 	mr->s.nodal = 0;
 	if (npts > 0)
 		start_points(r, f, &mr->s, p, npts);

@@ -13,9 +13,11 @@
  * viscosity solution: the first arrival, so fronts that meet simply
  * stop, and there is nothing to deloop).  The developed surface at time
  * t is the isosurface T = t.  The grid is the rate grid, optionally
- * refined by an integer factor per axis with the rates interpolated
- * trilinearly (as the ray-string advance interpolates them, thesis 7.3):
- * a resist with standing waves needs several nodes per half-period in z
+ * refined by an integer factor per axis.  Between rate-grid nodes the
+ * rate is the smooth field the nodes sample, reconstructed along each
+ * axis as linear plus the limited curvature of its neighbours (fmm.c;
+ * the ray-string advance interpolates trilinearly, thesis 7.3): a
+ * resist with standing waves needs several nodes per half-period in z
  * before the discretisation error falls under half a rate-grid cell.
  *
  * Units: micrometres, seconds, um/s.
@@ -58,8 +60,16 @@ struct fmm {
 
 /* Solves |grad T| R = 1 with T = 0 on the resist top.  refine[d] >= 1
  * (NULL: no refinement) multiplies the cells of axis d (x, y, z).
+ * Between nodes the rate is the field the nodes sample, reconstructed
+ * with its limited curvature (fmm.c).
  * Dies if the refined grid is too large (over 2^31 - 1 nodes). */
 struct fmm *fmm_solve(const struct ratefile *r, const int refine[3]);
+
+/* The same with the rate linear between nodes (trilinear at a refined
+ * grid's nodes), as the ray-string engine interpolates it (thesis 7.3):
+ * for comparisons with that engine (etch -xcheck), where the two must
+ * differ by their discretisations alone, not by their rate models. */
+struct fmm *fmm_solve_linear(const struct ratefile *r, const int refine[3]);
 
 /* The same by the published scheme, the slowness taken at the node
  * being updated (Sethian & Vladimirsky): second order where R is smooth
@@ -73,13 +83,15 @@ struct fmm *fmm_solve_nodal(const struct ratefile *r, const int refine[3]);
 struct fmm *fmm_solve_points(const struct ratefile *r, const int refine[3],
 			     const double *p, int npts);
 
-/* The solve of fmm_solve (npts 0) or fmm_solve_points, marched only as
- * far as queries need: T is read by fmm_time_at_settled alone, which
- * marches on until the nodes it interpolates between are accepted.  The
- * march is the same, node by node in the same order, so every T read is
- * the one the full solve gives (deloop's classifier: a mesh's nodes need
- * T only near the front at the print times, often a small part of the
- * grid).  f->rate stays NULL. */
+/* The solve of fmm_solve_linear (npts 0) or fmm_solve_points with the
+ * rate linear between nodes, marched only as far as queries need: T is
+ * read by fmm_time_at_settled alone, which marches on until the nodes
+ * it interpolates between are accepted.  The march is the same, node by
+ * node in the same order, so every T read is the one the full solve
+ * gives (deloop's classifier: a mesh's nodes need T only near the front
+ * at the print times, often a small part of the grid; the rate model is
+ * the ray-string's, so that the classifier sees the mesh's own front).
+ * f->rate stays NULL. */
 struct fmm *fmm_solve_lazy(const struct ratefile *r, const int refine[3],
 			   const double *p, int npts);
 

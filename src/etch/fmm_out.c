@@ -15,6 +15,7 @@
 #include "fmm.h"
 #include "fmt_plot.h"
 #include "par.h"
+#include "surf.h"
 #include "tri_decimate.h"
 #include "util.h"
 
@@ -159,13 +160,49 @@ static void tile_keep(const struct fmm *f, const struct tiling *tl, int k, doubl
 		}
 }
 
+/* Whether the n triangles v cross themselves (surf_crossings, measure's
+ * test, in the rate box). */
+static int tile_crosses(const struct fmm *f, const double *v, size_t n)
+{
+	struct surf *s = surf_new(f->bounds);
+	for (size_t i = 0; i < n; i++)
+		surf_add(s, v + 9 * i);
+	long c = surf_crossings(s, 1);
+	surf_free(s);
+	return c > 0;
+}
+
+/* Decimation bounds tried in turn, as fractions of tol: a collapse is
+ * checked against its own star only, so on thin walls (standing waves
+ * without bake) a sequence of them may push a triangle through another
+ * that shares no vertex with it; a smaller bound moves less. */
+static const double TOL_STEPS[] = {1, 0.25};
+
 size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4])
 {
 	double h = fmax(f->h[0], fmax(f->h[1], f->h[2]));
-	/* iso.h computes an edge's crossing in each tetrahedron holding it,
-	 * equal to rounding: a billionth of a cell welds them, and places a
-	 * vertex on a box face (the caps are snapped onto the faces) */
-	return tri_decimate(v, n, tol, 1e-9 * h, f->bounds, 1e-9 * h, keep, NULL);
+	double *dense = xreallocarray(NULL, 9 * n + 1, sizeof *dense);
+	memcpy(dense, v, 9 * n * sizeof *v);
+	size_t m = n;
+	for (size_t q = 0; q < sizeof TOL_STEPS / sizeof TOL_STEPS[0]; q++) {
+		if (q > 0)
+			memcpy(v, dense, 9 * n * sizeof *v);
+		/* iso.h computes an edge's crossing in each tetrahedron holding
+		 * it, equal to rounding: a billionth of a cell welds them, and
+		 * places a vertex on a box face (the caps are snapped onto the
+		 * faces) */
+		m = tri_decimate(v, n, TOL_STEPS[q] * tol, 1e-9 * h, f->bounds, 1e-9 * h, keep, NULL);
+		if (!tile_crosses(f, v, m))
+			break;
+		/* the extracted triangles as they are, if every bound crosses
+		 * (marching tetrahedra of one field never do) */
+		if (q + 1 == sizeof TOL_STEPS / sizeof TOL_STEPS[0]) {
+			memcpy(v, dense, 9 * n * sizeof *v);
+			m = n;
+		}
+	}
+	free(dense);
+	return m;
 }
 
 /* The solution sampled at every refine[d]-th node: the rate grid (f

@@ -42,14 +42,17 @@ static size_t unique_points(double *p, size_t n)
 /* -xcheck: the cross-check of the two engines (etch(1)): the vertices of every set of the ray-string
  * curves.plot against the fast-marching surface T = t at its print time,
  * median and 95th percentile of their distances, in um and in rate-grid
- * z cells.  The solve is refined in z as -refine says, by default auto. */
+ * z cells.  The solve is refined in z as -refine says, by default auto,
+ * with the rate linear between nodes as the ray-string engine takes it
+ * (fmm_solve_linear), so that the engines differ by their discretisations
+ * alone. */
 void etch_xcheck(const struct ratefile *r, struct etch_opts *o)
 {
 	if (!o->refine_auto && o->refine[0] * o->refine[1] * o->refine[2] == 1)
 		o->refine_auto = 1;
 	int refine[3];
 	etch_fmm_refinement(r, o, refine);
-	struct fmm *fm = fmm_solve(r, refine);
+	struct fmm *fm = fmm_solve_linear(r, refine);
 	struct plot_file *pf = fmt_plot_read(o->out3d, 3);
 	int n;
 	double *times = ptimes_make(o->et, o->pt, &n);

@@ -8,17 +8,17 @@
  *     (1e-12 s, 1e-9 um), and so must the median and 95th percentile of
  *     the distances of 101 points (fmm_distance_stats).
  *  2. z-only rate R = 1/(1 + a cos(kz)) (standing waves, 10 rate-grid
- *     nodes per period): against the exact integral of dz/R over the
- *     piecewise-linear rate the solve must be exact to rounding, plain
- *     and refined (1e-9 s; measured 3e-13 and 4e-12: each difference
- *     stands for the mean slowness over its cells, which along a grid
- *     line is that integral; the node's own slowness, the published
- *     scheme, was second order, 0.0087 s plain); against the closed
- *     form T = -z - (a/k) sin(kz) of the analytic field within 0.012 s
- *     (measured 0.0080: the error of interpolating R linearly between
- *     rate-grid nodes 1/10 period apart, which no refinement removes).
- *     fmm_auto_refine's factor must keep it under a tenth of a cell
- *     (0.001 s; dT/dz is about 1 s/um).
+ *     nodes per period): against the closed form T = -z - (a/k) sin(kz)
+ *     of the field the nodes sample, plain, refined z x4 and at
+ *     fmm_auto_refine's factor, within ZWAVE_TOL (measured 6.3e-4 s
+ *     plain, 5.4e-4 refined: the rate between nodes is reconstructed with its limited
+ *     curvature, fmm.c; taken as linear it was 0.0080 s behind, which no
+ *     refinement removed, and the node's own slowness, the published
+ *     scheme, 0.0087 s plain).  A rate linear in z from 1 to 3 um/s
+ *     (no curvature to reconstruct) must be exact to rounding against
+ *     the integral h ln(R1/R0)/(R1 - R0) per cell, plain and refined
+ *     (1e-9 s: each difference stands for the mean slowness over its
+ *     cells, exact however fast the rate changes).
  *  3. Sphere from a point, uniform R = 1: |T - r| over 0.5 <= r <= 1.2
  *     must shrink with the grid (h = 0.1 -> 0.05: max error falls by a
  *     factor >= 1.5; measured 1.8 and, off-node, 1.7: a point source
@@ -172,6 +172,11 @@ static double ztest_error(const struct ratefile *r, int rz, int closed_form)
 	return emax;
 }
 
+/* The standing waves' tolerance against their closed form: a tenth of
+ * a rate-grid cell (0.001 s; dT/dz is about 1 s/um), twice what is
+ * measured. */
+#define ZWAVE_TOL 0.001
+
 static void test_zonly(void)
 {
 	const double b[6] = {0, 0.2, 0, 0.2, -1, 0};
@@ -182,15 +187,21 @@ static void test_zonly(void)
 				r->arrays[0].v[fmt_rate_index(r, i, j, k)] =
 					1 / (1 + ZA * cos(ZK * fmt_rate_z(r, k)));
 	int ra = fmm_auto_refine(r);
-	double e1 = ztest_error(r, 1, 0), e4 = ztest_error(r, 4, 0), ea = ztest_error(r, ra, 0);
-	printf("z-only: automatic refinement x%d: error %.3g s\n", ra, ea);
-	CHECK(ea < 0.1 * 0.01, "z-only: automatic refinement x%d leaves %g s (0.1 cell = 0.001 s)",
-	      ra, ea);
-	double ec = ztest_error(r, 4, 1);
-	printf("z-only: error vs piecewise-linear integral %.3g s (plain), %.3g s (z x4); "
-	       "vs closed form %.3g s\n", e1, e4, ec);
-	CHECK(e1 < 1e-9 && e4 < 1e-9, "z-only: error %g s plain, %g s z x4: not exact", e1, e4);
-	CHECK(ec < 0.012, "z-only: error vs closed form %g s", ec);
+	double e1 = ztest_error(r, 1, 1), e4 = ztest_error(r, 4, 1), ea = ztest_error(r, ra, 1);
+	printf("z-only: error vs closed form %.3g s (plain), %.3g s (z x4), %.3g s "
+	       "(automatic refinement x%d)\n", e1, e4, ea, ra);
+	CHECK(e1 < ZWAVE_TOL && e4 < ZWAVE_TOL && ea < ZWAVE_TOL,
+	      "z-only: error vs closed form %g s plain, %g s z x4, %g s x%d (tolerance %g s)", e1,
+	      e4, ea, ra, ZWAVE_TOL);
+	/* a linear rate: the piecewise-linear integral is the exact answer */
+	for (int k = 0; k < r->nz; k++)
+		for (int j = 0; j < 3; j++)
+			for (int i = 0; i < 3; i++)
+				r->arrays[0].v[fmt_rate_index(r, i, j, k)] = 3 + 2 * fmt_rate_z(r, k);
+	double l1 = ztest_error(r, 1, 0), l4 = ztest_error(r, 4, 0);
+	printf("z-only: linear rate, error vs its integral %.3g s (plain), %.3g s (z x4)\n", l1, l4);
+	CHECK(l1 < 1e-9 && l4 < 1e-9, "z-only: linear rate: error %g s plain, %g s z x4: not exact",
+	      l1, l4);
 	fmt_rate_free(r);
 }
 
@@ -595,7 +606,8 @@ static int xcheck(int argc, char **argv)
 	struct ratefile *r = fmt_rate_read(argv[2]);
 	struct plot_file *pf = fmt_plot_read(argv[3], 3);
 	int ref[3] = {1, 1, atoi(argv[4])};
-	struct fmm *f = fmm_solve(r, ref);
+	/* the ray-string's rate model, as etch -xcheck takes it */
+	struct fmm *f = fmm_solve_linear(r, ref);
 	double cell = (r->zmax - r->zmin) / (r->nz - 1);
 	if (argc - 5 != pf->nsets)
 		die("xcheck: %d times for %d sets", argc - 5, pf->nsets);

@@ -11,10 +11,14 @@
 # fmm_solve_nodal: independent of the engine's) refined 4 x 4 x 1; without
 # bake fmm_solve refined 4 x 4 x 1 (the published scheme needs z x4 there
 # too: 10 s; it gave fmm -0.014/0.055, ray -0.022/0.083).
-# Measured (mean, p95): with bake fmm -0.020 0.043, ray -deloop +0.008
-# 0.026; without bake fmm -0.022 0.069, ray -deloop -0.036 0.137.  Before
-# its bias was removed the fast-marching surface of the full example lay -0.176 (p95
-# 0.29) behind with bake, and the default run had no z refinement.
+# Measured (mean, p95): with bake fmm -0.018 0.053, ray -deloop +0.019
+# 0.049; without bake fmm -0.033 0.117, ray -deloop -0.018 0.097 (the
+# rate between nodes reconstructed with its curvature, fmm.c, in the
+# solves and the references; with the rate linear between nodes: fmm
+# -0.020 0.043, ray +0.008 0.026; fmm -0.022 0.069, ray -0.036 0.137).
+# Before its bias was removed the fast-marching surface of the full
+# example lay -0.176 (p95 0.29) behind with bake, and the default run had
+# no z refinement.
 . "$TOP/tests/lib/common.sh"
 X=$BUILD/tests/etch/fmm_exact
 [ -x "$X" ] || fail "$X not built"
