@@ -16,6 +16,7 @@
 #include "fmt_plot.h"
 #include "par.h"
 #include "tri_decimate.h"
+#include "tri_weld.h"
 #include "util.h"
 
 #include <math.h>
@@ -159,13 +160,19 @@ static void tile_keep(const struct fmm *f, const struct tiling *tl, int k, doubl
 		}
 }
 
-size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4])
+double fmm_weld_eps(const struct fmm *f)
 {
-	double h = fmax(f->h[0], fmax(f->h[1], f->h[2]));
 	/* iso.h computes an edge's crossing in each tetrahedron holding it,
 	 * equal to rounding: a billionth of a cell welds them, and places a
 	 * vertex on a box face (the caps are snapped onto the faces) */
-	return tri_decimate(v, n, tol, 1e-9 * h, f->bounds, 1e-9 * h, keep, NULL);
+	return 1e-9 * fmax(f->h[0], fmax(f->h[1], f->h[2]));
+}
+
+size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, const double keep[4],
+			 double **out)
+{
+	double eps = fmm_weld_eps(f);
+	return tri_decimate_welded(w, tol, f->bounds, eps, keep, NULL, out);
 }
 
 /* The solution sampled at every refine[d]-th node: the rate grid (f
@@ -251,7 +258,8 @@ struct tiled {
 	struct tiling tl;
 	const double *tmax;     /* per tile: the latest arrival time of its nodes */
 	struct tris *out;       /* per job (set q, tile k: q * ntiles + k) */
-	struct tris *scratch;   /* per worker: the dense soup of a tile */
+	struct tri_weld *weld;  /* per worker: a tile's dense surface, welded as
+				 * it is extracted (its soup is never held) */
 };
 
 /* the cells of tile k along x and y (iso_surface_window's numbering: the
@@ -300,11 +308,16 @@ static int tile_same(const struct tiled *b, int q, size_t k)
 	return t0 > 0 && t1 > 0 && b->tmax[k] < t0 && b->tmax[k] < t1;
 }
 
+static void weld_collect(void *ctx, const double tri[9])
+{
+	tri_weld_add(ctx, tri);
+}
+
 static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 {
 	struct tiled *b = ctx;
 	size_t nt = (size_t)b->tl.ntile[0] * (size_t)b->tl.ntile[1];
-	struct tris *sc = &b->scratch[worker];
+	struct tri_weld *w = &b->weld[worker];
 	for (size_t j = lo; j < hi; j++) {
 		int q = (int)(j / nt), k = (int)(j % nt);
 		struct tris *o = &b->out[j];
@@ -315,13 +328,11 @@ static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 		double keep[4];
 		tile_cells(b->f, &b->tl, k, c0, c1);
 		tile_keep(b->f, &b->tl, k, keep);
-		sc->n = 0;
-		surface_window(b->f, b->times[q], c0, c1, collect, sc);
-		size_t n = fmm_decimate_tile(b->f, sc->v, sc->n, b->tol, keep);
-		o->v = xreallocarray(o->v, 9 * n + 1, sizeof *o->v);
-		o->cap = 9 * n + 1;
-		memcpy(o->v, sc->v, 9 * n * sizeof *o->v);
-		o->n = n;
+		w->eps = fmm_weld_eps(b->f);
+		surface_window(b->f, b->times[q], c0, c1, weld_collect, w);
+		free(o->v);
+		o->n = fmm_decimate_tile(b->f, w, b->tol, keep, &o->v);
+		o->cap = 9 * o->n + 1;
 	}
 }
 
@@ -385,7 +396,7 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 	b.tmax = tmax;
 	struct tris *out = xcalloc((size_t)nb * nt, sizeof *out);
 	struct tris *last = xcalloc(nt, sizeof *last);  /* the previous set's tiles */
-	b.scratch = xcalloc((size_t)nb, sizeof *b.scratch);
+	b.weld = xcalloc((size_t)nb, sizeof *b.weld);
 	size_t *start = xreallocarray(NULL, nt + 1, sizeof *start);
 	for (int k0 = 0; k0 < ntimes; k0 += nb) {
 		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
@@ -419,10 +430,10 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 	for (size_t k = 0; k < nt; k++)
 		free(last[k].v);
 	for (int q = 0; q < nb; q++)
-		free(b.scratch[q].v);
+		tri_weld_free(&b.weld[q]);
 	free(out);
 	free(last);
-	free(b.scratch);
+	free(b.weld);
 	free(start);
 	free(tmax);
 }

@@ -35,6 +35,7 @@
 #include "util.h"
 #include "vec3.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,7 +102,7 @@ static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 {
 	m->stamp++;
 	size_t k = 0;
-	for (long *pc = &m->head[x]; *pc >= 0;) {
+	for (int *pc = &m->head[x]; *pc >= 0;) {
 		long c = *pc, t = c / 3;
 		if (m->tv[3 * t] < 0) {
 			*pc = m->next[c];       /* a dead corner: unlinked for good */
@@ -584,7 +585,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	for (size_t i = 0; i < m.nv; i++)
 		m.ostart[i + 2] += m.ostart[i + 1];
 	for (size_t c = 0; c < 3 * nt; c++)
-		m.otri[m.ostart[m.tv[c] + 1]++] = c / 3;
+		m.otri[m.ostart[m.tv[c] + 1]++] = (int)(c / 3);
 	m.tol2 = 0.5 * tol * tol;
 	m.thead = xreallocarray(NULL, nt + 1, sizeof *m.thead);
 	m.pnext = xreallocarray(NULL, m.nv + 1, sizeof *m.pnext);
@@ -605,7 +606,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	for (size_t c = 3 * nt; c-- > 0;) {
 		int w = m.tv[c];
 		m.next[c] = m.head[w];
-		m.head[w] = (long)c;
+		m.head[w] = (int)c;
 	}
 	for (size_t t = 0; t < nt; t++) {
 		const int *a = m.tv + 3 * t;
@@ -718,12 +719,19 @@ static void dmesh_free(struct dmesh *m)
 	free(m->pts);
 }
 
-size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
-		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+/* the welded mesh (p, nv, tv, n) decimated, its triangles kept as a soup
+ * into out (9 doubles each, at most n); takes over p and tv */
+static size_t decimate(double *p, size_t nv, int *tv, size_t n, double tol, const double box[6],
+		       double box_eps, const double keep[4], struct tri_decimate_stats *stp,
+		       double **out, int in_place)
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct dmesh m = {0};
-	m.nv = tri_weld(v, n, weld_eps, &m.p, &m.tv);
+	if (n > INT_MAX / 3)    /* the corner lists are of int */
+		die("tri_decimate: %zu triangles, more than %d", n, INT_MAX / 3);
+	m.nv = nv;
+	m.p = p;
+	m.tv = tv;
 	/* drop the triangles welding made degenerate */
 	size_t nt = 0;
 	for (size_t t = 0; t < n; t++) {
@@ -743,18 +751,42 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 			st.locked++;
 	if (tol > 0)
 		collapse_all(&m);
-	size_t out = 0;
+	size_t kept = 0;
+	for (size_t t = 0; t < nt; t++)
+		kept += m.tv[3 * t] >= 0;
+	double *v = in_place ? *out : xreallocarray(NULL, 9 * kept + 1, sizeof *v);
+	size_t o = 0;
 	for (size_t t = 0; t < nt; t++) {
 		const int *a = m.tv + 3 * t;
 		if (a[0] < 0)
 			continue;
 		for (int s = 0; s < 3; s++)
-			memcpy(v + 9 * out + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
-		out++;
+			memcpy(v + 9 * o + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
+		o++;
 	}
-	st.out = out;
+	*out = v;
+	st.out = o;
 	if (stp)
 		*stp = st;
 	dmesh_free(&m);
-	return out;
+	return o;
+}
+
+size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+{
+	double *p;
+	int *tv;
+	size_t nv = tri_weld(v, n, weld_eps, &p, &tv);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, stp, &v, 1);
+}
+
+size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
+			   const double keep[4], struct tri_decimate_stats *st, double **out)
+{
+	double *p;
+	int *tv;
+	size_t n;
+	size_t nv = tri_weld_take(w, &p, &tv, &n);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, st, out, 0);
 }

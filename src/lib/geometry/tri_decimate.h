@@ -55,4 +55,12 @@ struct tri_decimate_stats {
 size_t tri_decimate(double *v, size_t n, double tol, double weld, const double box[6],
 		    double box_eps, const double keep[4], struct tri_decimate_stats *st);
 
+/* The same on the triangles welded so far by w (tri_weld.h; its weld
+ * distance is the welding's), so that their soup is never held: the
+ * kept triangles go to *out (9 doubles each, allocated, the caller's to
+ * free), the count is returned, and w is empty again. */
+struct tri_weld;
+size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
+			   const double keep[4], struct tri_decimate_stats *st, double **out);
+
 #endif

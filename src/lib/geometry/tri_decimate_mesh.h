@@ -22,12 +22,14 @@ struct dmesh {
 	unsigned char *face;    /* box faces a vertex lies on, bit f for bounds[f] */
 	unsigned char *flag;    /* F_* */
 	int *tv;                /* 3 vertex per triangle, -1: dead triangle */
-	long *head, *next;      /* corner lists: head per vertex, next per corner */
+	int *head, *next;       /* corner lists: head per vertex, next per corner (int: a
+				 * tile has fewer than 2^31 corners, tri_decimate checks) */
 	double tol, tol2;
 	int *thead;             /* per triangle: the first input vertex it answers for */
 	int *pnext;             /* per vertex: the next one of the same triangle */
 	int *otv;               /* the input triangles (welded) */
-	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
+	size_t *ostart;         /* per vertex: its input triangles (CSR) */
+	int *otri;
 	float *osph;            /* per input triangle: a bounding sphere, centre
 				 * and radius (rounded outwards) */
 	/* scratch */
