@@ -165,11 +165,13 @@ enum { FMM_TILE_CELLS = 128 };
  * with the distance fmm_weld_eps) with the bound tol (um), the vertices
  * kept on the box faces as the grid f places them, and those on the
  * planes keep (x0 x1 y0 y1; infinite: none) kept: the triangles kept go
- * to *out (9 doubles each, allocated), w is emptied.  Returns the count. */
+ * to *out (tri_decimate.h, its arrays allocated), w is emptied.  Returns
+ * the count. */
 struct tri_weld;
+struct tri_mesh;
 double fmm_weld_eps(const struct fmm *f);
 size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, const double keep[4],
-			 double **out);
+			 struct tri_mesh *out);
 
 /* Replaces, in the n triangles *v (9 doubles each, *cap allocated, as
  * xgrow), every rectangle of grid columns whose surface is one exactly

@@ -169,7 +169,7 @@ double fmm_weld_eps(const struct fmm *f)
 }
 
 size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, const double keep[4],
-			 double **out)
+			 struct tri_mesh *out)
 {
 	double eps = fmm_weld_eps(f);
 	return tri_decimate_welded(w, tol, f->bounds, eps, keep, NULL, out);
@@ -257,7 +257,7 @@ struct tiled {
 	double tol;
 	struct tiling tl;
 	const double *tmax;     /* per tile: the latest arrival time of its nodes */
-	struct tris *out;       /* per job (set q, tile k: q * ntiles + k) */
+	struct tri_mesh *out;   /* per job (set q, tile k: q * ntiles + k) */
 	struct tri_weld *weld;  /* per worker: a tile's dense surface, welded as
 				 * it is extracted (its soup is never held) */
 };
@@ -320,8 +320,8 @@ static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 	struct tri_weld *w = &b->weld[worker];
 	for (size_t j = lo; j < hi; j++) {
 		int q = (int)(j / nt), k = (int)(j % nt);
-		struct tris *o = &b->out[j];
-		o->n = 0;
+		struct tri_mesh *o = &b->out[j];
+		o->nt = 0;
 		if (tile_same(b, q, (size_t)k))
 			continue;
 		int c0[3], c1[3];
@@ -330,20 +330,20 @@ static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 		tile_keep(b->f, &b->tl, k, keep);
 		w->eps = fmm_weld_eps(b->f);
 		surface_window(b->f, b->times[q], c0, c1, weld_collect, w);
-		free(o->v);
-		o->n = fmm_decimate_tile(b->f, w, b->tol, keep, &o->v);
-		o->cap = 9 * o->n + 1;
+		tri_mesh_free(o);
+		fmm_decimate_tile(b->f, w, b->tol, keep, o);
 	}
 }
 
 /* one set's tiles as one list of triangles (for the writers' get) */
 struct set_view {
-	const struct tris *tile;
+	const struct tri_mesh *tile;
 	const size_t *start;    /* ntiles + 1 prefix sums of the counts */
 	size_t nt;
 };
 
-static const double *view_tri(const struct set_view *sv, size_t i)
+/* triangle i of the set: its three corners' coordinates */
+static void view_tri(const struct set_view *sv, size_t i, const double *c[3])
 {
 	size_t lo = 0, hi = sv->nt;     /* the tile k with start[k] <= i < start[k + 1] */
 	while (hi - lo > 1) {
@@ -353,20 +353,25 @@ static const double *view_tri(const struct set_view *sv, size_t i)
 		else
 			hi = mid;
 	}
-	return sv->tile[lo].v + 9 * (i - sv->start[lo]);
+	const struct tri_mesh *m = &sv->tile[lo];
+	const int *tv = m->tv + 3 * (i - sv->start[lo]);
+	for (int s = 0; s < 3; s++)
+		c[s] = m->p + 3 * (size_t)tv[s];
 }
 
 static void view3(void *ctx, size_t i, double *c)
 {
-	const double *v = view_tri(ctx, i);
-	memcpy(c, v, 9 * sizeof *c);
-	memcpy(c + 9, v, 3 * sizeof *c);
+	const double *v[3];
+	view_tri(ctx, i, v);
+	for (int s = 0; s < 4; s++)
+		memcpy(c + 3 * s, v[s % 3], 3 * sizeof *c);
 }
 
 static void view2(void *ctx, size_t i, double *c)
 {
-	const double *v = view_tri(ctx, i);
-	double q[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
+	const double *v[3];
+	view_tri(ctx, i, v);
+	double q[8] = {v[0][0], v[0][1], v[1][0], v[1][1], v[2][0], v[2][1], v[0][0], v[0][1]};
 	memcpy(c, q, sizeof q);
 }
 
@@ -386,6 +391,17 @@ static void write_set(struct plot_writer *w3, struct plot_writer *w2, const stru
 	}
 }
 
+static void tri_mesh_copy(struct tri_mesh *to, const struct tri_mesh *from)
+{
+	tri_mesh_free(to);
+	to->p = xreallocarray(NULL, 3 * from->nv + 1, sizeof *to->p);
+	to->tv = xreallocarray(NULL, 3 * from->nt + 1, sizeof *to->tv);
+	memcpy(to->p, from->p, 3 * from->nv * sizeof *to->p);
+	memcpy(to->tv, from->tv, 3 * from->nt * sizeof *to->tv);
+	to->nv = from->nv;
+	to->nt = from->nt;
+}
+
 static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 			struct plot_writer *w3, struct plot_writer *w2, double tol)
 {
@@ -394,8 +410,8 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 	size_t nt = (size_t)b.tl.ntile[0] * (size_t)b.tl.ntile[1];
 	double *tmax = tile_tmax(f, &b.tl);
 	b.tmax = tmax;
-	struct tris *out = xcalloc((size_t)nb * nt, sizeof *out);
-	struct tris *last = xcalloc(nt, sizeof *last);  /* the previous set's tiles */
+	struct tri_mesh *out = xcalloc((size_t)nb * nt, sizeof *out);
+	struct tri_mesh *last = xcalloc(nt, sizeof *last);      /* the previous set's tiles */
 	b.weld = xcalloc((size_t)nb, sizeof *b.weld);
 	size_t *start = xreallocarray(NULL, nt + 1, sizeof *start);
 	for (int k0 = 0; k0 < ntimes; k0 += nb) {
@@ -405,30 +421,28 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 		b.out = out;
 		par_for((size_t)m * nt, 1, tile_range, &b);
 		for (int q = 0; q < m; q++) {
-			struct tris *set = out + (size_t)q * nt;
+			struct tri_mesh *set = out + (size_t)q * nt;
 			start[0] = 0;
 			for (size_t k = 0; k < nt; k++) {
 				if (tile_same(&b, q, k)) {
-					const struct tris *from = q > 0 ? &out[(size_t)(q - 1) * nt + k] : &last[k];
-					set[k].v = xreallocarray(set[k].v, 9 * from->n + 1, sizeof *set[k].v);
-					memcpy(set[k].v, from->v, 9 * from->n * sizeof *from->v);
-					set[k].n = from->n;
+					const struct tri_mesh *from = q > 0 ? &out[(size_t)(q - 1) * nt + k] : &last[k];
+					tri_mesh_copy(&set[k], from);
 				}
-				start[k + 1] = start[k] + set[k].n;
+				start[k + 1] = start[k] + set[k].nt;
 			}
 			struct set_view sv = {set, start, nt};
 			write_set(w3, w2, f, times[k0 + q], start[nt], view3, view2, &sv);
 		}
 		for (size_t k = 0; k < nt; k++) {       /* the batch's last set is kept */
-			struct tris x = last[k];
+			struct tri_mesh x = last[k];
 			last[k] = out[(size_t)(m - 1) * nt + k];
 			out[(size_t)(m - 1) * nt + k] = x;
 		}
 	}
 	for (size_t j = 0; j < (size_t)nb * nt; j++)
-		free(out[j].v);
+		tri_mesh_free(&out[j]);
 	for (size_t k = 0; k < nt; k++)
-		free(last[k].v);
+		tri_mesh_free(&last[k]);
 	for (int q = 0; q < nb; q++)
 		tri_weld_free(&b.weld[q]);
 	free(out);

@@ -688,6 +688,53 @@ static void collapse_all(struct dmesh *mp)
 	*mp = m;
 }
 
+/* the live triangles of m into v, 9 doubles each, in order */
+static size_t write_soup(const struct dmesh *m, double *v)
+{
+	size_t o = 0;
+	for (size_t t = 0; t < m->nt; t++) {
+		const int *a = m->tv + 3 * t;
+		if (a[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++)
+			memcpy(v + 9 * o + 3 * s, m->p + 3 * (size_t)a[s], 3 * sizeof *v);
+		o++;
+	}
+	return o;
+}
+
+/* the live triangles of m, in order, as a tri_mesh of the vertices they
+ * use (renumbered in the order of first use; m->mark is reused) */
+static size_t write_mesh(struct dmesh *m, struct tri_mesh *out)
+{
+	size_t nt = 0, nv = 0;
+	for (size_t t = 0; t < m->nt; t++)
+		nt += m->tv[3 * t] >= 0;
+	int *num = (int *)m->mark;      /* unsigned per vertex: the new numbers */
+	for (size_t i = 0; i < m->nv; i++)
+		num[i] = -1;
+	out->tv = xreallocarray(NULL, 3 * nt + 1, sizeof *out->tv);
+	size_t o = 0;
+	for (size_t t = 0; t < m->nt; t++) {
+		const int *a = m->tv + 3 * t;
+		if (a[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			if (num[a[s]] < 0)
+				num[a[s]] = (int)nv++;
+			out->tv[3 * o + (size_t)s] = num[a[s]];
+		}
+		o++;
+	}
+	out->p = xreallocarray(NULL, 3 * nv + 1, sizeof *out->p);
+	for (size_t i = 0; i < m->nv; i++)
+		if (num[i] >= 0)
+			memcpy(out->p + 3 * (size_t)num[i], m->p + 3 * i, 3 * sizeof *out->p);
+	out->nv = nv;
+	out->nt = nt;
+	return nt;
+}
+
 static void dmesh_free(struct dmesh *m)
 {
 	free(m->p);
@@ -719,11 +766,12 @@ static void dmesh_free(struct dmesh *m)
 	free(m->pts);
 }
 
-/* the welded mesh (p, nv, tv, n) decimated, its triangles kept as a soup
- * into out (9 doubles each, at most n); takes over p and tv */
+/* the welded mesh (p, nv, tv, n) decimated, taking over p and tv: its
+ * triangles kept go to soup (9 doubles each, at most n) or, with soup
+ * NULL, to mesh */
 static size_t decimate(double *p, size_t nv, int *tv, size_t n, double tol, const double box[6],
 		       double box_eps, const double keep[4], struct tri_decimate_stats *stp,
-		       double **out, int in_place)
+		       double *soup, struct tri_mesh *mesh)
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct dmesh m = {0};
@@ -751,20 +799,7 @@ static size_t decimate(double *p, size_t nv, int *tv, size_t n, double tol, cons
 			st.locked++;
 	if (tol > 0)
 		collapse_all(&m);
-	size_t kept = 0;
-	for (size_t t = 0; t < nt; t++)
-		kept += m.tv[3 * t] >= 0;
-	double *v = in_place ? *out : xreallocarray(NULL, 9 * kept + 1, sizeof *v);
-	size_t o = 0;
-	for (size_t t = 0; t < nt; t++) {
-		const int *a = m.tv + 3 * t;
-		if (a[0] < 0)
-			continue;
-		for (int s = 0; s < 3; s++)
-			memcpy(v + 9 * o + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
-		o++;
-	}
-	*out = v;
+	size_t o = soup ? write_soup(&m, soup) : write_mesh(&m, mesh);
 	st.out = o;
 	if (stp)
 		*stp = st;
@@ -778,15 +813,24 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 	double *p;
 	int *tv;
 	size_t nv = tri_weld(v, n, weld_eps, &p, &tv);
-	return decimate(p, nv, tv, n, tol, box, box_eps, keep, stp, &v, 1);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, stp, v, NULL);
 }
 
 size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
-			   const double keep[4], struct tri_decimate_stats *st, double **out)
+			   const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out)
 {
 	double *p;
 	int *tv;
 	size_t n;
 	size_t nv = tri_weld_take(w, &p, &tv, &n);
-	return decimate(p, nv, tv, n, tol, box, box_eps, keep, st, out, 0);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, st, NULL, out);
+}
+
+void tri_mesh_free(struct tri_mesh *m)
+{
+	free(m->p);
+	free(m->tv);
+	m->p = NULL;
+	m->tv = NULL;
+	m->nv = m->nt = 0;
 }
