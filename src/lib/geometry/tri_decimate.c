@@ -393,9 +393,13 @@ static int cand_cmp(const void *a, const void *b)
 /* pushes u's cheapest collapse: with full 0 the cheapest by the cost
  * alone (checked in full when popped), 1 the cheapest that passes the
  * topology and shape checks (valid), 2 the cheapest that passes every
- * check (valid and points_ok) */
-static void consider(struct dmesh *m, struct heap *h, int u, int full)
+ * check (valid and points_ok).  failed >= 0: the collapse of u onto
+ * failed has just failed those checks on u's star as star_prep(m, u)
+ * left it, unchanged since: the star is not gathered again and that
+ * candidate is not weighed again (it would fail the same way) */
+static void consider_but(struct dmesh *m, struct heap *h, int u, int full, int failed, int prepped)
 {
+	m->checked[u] = 0;
 	m->exact[u] = full == 0;
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
 		heap_remove(h, u);
@@ -405,7 +409,8 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 	if (full) {
 		/* the star valid needs anyway gives the neighbours too (their
 		 * order does not matter: the candidates are sorted) */
-		star_prep(m, u);
+		if (!prepped)
+			star_prep(m, u);
 		k = star_ring(m, u);
 	} else
 		k = ring_cnt(m, u, &m->nbr, &m->cnbr);
@@ -439,12 +444,22 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 	}
 	for (size_t i = 0; i < nc; i++) {
 		double c = m->cands[i].cost;
+		if (m->cands[i].v == failed)
+			continue;
 		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || dm_points_ok(m, u, m->cands[i].v))) {
 			heap_set(h, (struct entry){c, u, m->cands[i].v});
+			m->checked[u] = 1;
+			m->vu[u] = m->ver[u];
+			m->vv[u] = m->ver[m->cands[i].v];
 			return;
 		}
 	}
 	heap_remove(h, u);
+}
+
+static void consider(struct dmesh *m, struct heap *h, int u, int full)
+{
+	consider_but(m, h, u, full, -1, 0);
 }
 
 /* ---- edges at setup ---- */
@@ -555,6 +570,10 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.tmark = xcalloc(nt + 1, sizeof *m.tmark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.exact = xcalloc(m.nv + 1, 1);
+	m.ver = xcalloc(m.nv + 1, sizeof *m.ver);
+	m.checked = xcalloc(m.nv + 1, 1);
+	m.vu = xcalloc(m.nv + 1, sizeof *m.vu);
+	m.vv = xcalloc(m.nv + 1, sizeof *m.vv);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
 	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
 	m.tol = tol;
@@ -644,13 +663,18 @@ static void collapse_all(struct dmesh *mp)
 		 * the topology and shape alone (the input checks, which
 		 * rarely fail, run when the new entry is popped), or
 		 * those and the input checks */
-		star_prep(&m, e.u);
-		if (!valid(&m, e.u, e.v, &c, 0)) {
-			consider(&m, &h, e.u, 1);
-			continue;
+		/* an entry that passed valid with u's and v's stars as they
+		 * are now (their versions) passes it again */
+		int prepped = !(m.checked[e.u] && m.vu[e.u] == m.ver[e.u] && m.vv[e.u] == m.ver[e.v]);
+		if (prepped) {
+			star_prep(&m, e.u);
+			if (!valid(&m, e.u, e.v, &c, 0)) {
+				consider_but(&m, &h, e.u, 1, e.v, 1);
+				continue;
+			}
 		}
 		if (!dm_points_ok(&m, e.u, e.v)) {
-			consider(&m, &h, e.u, 2);
+			consider_but(&m, &h, e.u, 2, e.v, prepped);
 			continue;
 		}
 		dm_collapse(&m, e.u, e.v);
@@ -663,8 +687,13 @@ static void collapse_all(struct dmesh *mp)
 		 * same entry as a full consider) */
 		size_t k = ring_cnt(&m, e.v, &nb, &cnb);
 		xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
-		for (size_t i = 0; i < k; i++)
+		/* the stars that changed: v's and its neighbours' (every
+		 * triangle rewritten or dropped holds v now, or held u and v) */
+		m.ver[e.v]++;
+		for (size_t i = 0; i < k; i++) {
 			nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+			m.ver[nb[i]]++;
+		}
 		for (size_t i = 0; i < k; i++) {
 			int w = nb[i];
 			long p = h.pos[w];
@@ -677,8 +706,10 @@ static void collapse_all(struct dmesh *mp)
 			if (!valid_cheap(&m, w, e.v, nbc[i], &c))
 				continue;
 			struct cand a = {c, e.v};
-			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0) {
 				heap_set(&h, (struct entry){c, w, e.v});
+				m.checked[w] = 0;
+			}
 		}
 	}
 	free(nb);
@@ -748,6 +779,10 @@ static void dmesh_free(struct dmesh *m)
 	free(m->stri);
 	free(m->cnt);
 	free(m->exact);
+	free(m->ver);
+	free(m->checked);
+	free(m->vu);
+	free(m->vv);
 	free(m->head);
 	free(m->next);
 	free(m->tv);

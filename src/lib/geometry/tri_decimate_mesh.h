@@ -46,6 +46,10 @@ struct dmesh {
 	int *cnt;               /* per vertex: triangles shared with consider's u */
 	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
 				 * consider(u, 0) would give now */
+	unsigned *ver;          /* per vertex: bumped when its star changes */
+	unsigned char *checked; /* per vertex: its entry passed valid when its
+				 * and its target's versions were vu, vv */
+	unsigned *vu, *vv;
 	int *ring, *ring2;
 	size_t cring, cring2;
 	struct star_tri *stri;  /* star_prep's: the star of su */
