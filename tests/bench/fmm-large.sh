@@ -17,7 +17,8 @@
 # Then the users' targets, each with the figures it is judged on.  The
 # 40 um array end to end is large.sh's LARGE_RUNS=fmm40 (about 4 times
 # the 20 um etch's memory and CPU); FMM_LARGE_40=1 runs its etch here
-# too.  Disk: 3 GB in $TMPDIR (6 GB more with FMM_LARGE_40).  Asserts
+# too; FMM_LARGE_SIZE (um, even, default 20) sets the first case's
+# window.  Disk: 3 GB in $TMPDIR (6 GB more with FMM_LARGE_40).  Asserts
 # nothing.
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
@@ -58,8 +59,9 @@ fig() { # LABEL FIELD (1 cpu, 2 wall, 3 peak MB)
 	[ -r "$1.fig" ] && awk -v f="$2" '{ print $f }' "$1.fig" || echo nan
 }
 
-echo "examples/array40 at 20 um, etch -et 60 -last -method fmm:"
-sh "$TOP/examples/array40/make-mask.sh" 20 >mask20.in
+size=${FMM_LARGE_SIZE:-20}
+echo "examples/array40 at $size um, etch -et 60 -last -method fmm:"
+sh "$TOP/examples/array40/make-mask.sh" "$size" >mask20.in
 "$NEW/splat" -q -o a20.cont mask20.in || exit 1
 "$NEW/bleach" -q -o a20.bin a20.cont "$TOP/examples/array40/resist.in" || exit 1
 rm -f a20.cont
@@ -86,7 +88,7 @@ if [ "${FMM_LARGE_40:-0}" = 1 ]; then
 fi
 
 echo "targets (old -> new):"
-printf '  "fmm 20 um peak under 2 GB": etch %s -> %s GB\n' \
+printf '  "fmm 20 um peak under 2 GB" (%s um): etch %s -> %s GB\n' "$size" \
 	"$(fig old20 3 | awk '{ printf "%.2f", $1 / 1024 }')" "$(fig new20 3 | awk '{ printf "%.2f", $1 / 1024 }')"
 printf '  "examples/defect with -method fmm under 3x the ray-string'"'"'s CPU": %s -> %s x (ray-string %s s CPU)\n' \
 	"$(echo "$(fig oldd 1) $(fig ray 1)" | awk '{ printf "%.0f", $1 / $2 }')" \
