@@ -149,9 +149,9 @@ void etch_report(const struct etch_opts *o, const struct rfield *f,
 
 /* fmm_run.c: -method fmm, the fast-marching engine (fmm.h): arrival
  * times on the (refined) rate grid, isosurfaces at the print times, and
- * the same curves.cut as the ray-string engine. */
-void etch_run_fmm(const struct ratefile *r, const struct rfield *f,
-		  const struct etch_opts *o);
+ * the same curves.cut as the ray-string engine.  Frees r's arrays once
+ * the solve has its own rates (r and f's values are not to be read after). */
+void etch_run_fmm(struct ratefile *r, const struct rfield *f, const struct etch_opts *o);
 /* The refinement asked for with -refine, or its auto choice. */
 void etch_fmm_refinement(const struct ratefile *r, const struct etch_opts *o, int refine[3]);
 

@@ -173,11 +173,19 @@ double fmm_default_tol(const struct fmm *f);
  * a 20 um window at 0.05 um 16. */
 enum { FMM_TILE_CELLS = 128 };
 
-/* Decimates in place the n triangles v (9 doubles each) of one tile of a
- * set (tri_decimate.h) with the bound tol (um), the vertices welded and
+/* Decimates the triangles of one tile of a set welded in w (tri_weld.h,
+ * with the distance fmm_weld_eps) with the bound tol (um), the vertices
  * kept on the box faces as the grid f places them, and those on the
- * planes keep (x0 x1 y0 y1; infinite: none) kept.  Returns the count. */
-size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4]);
+ * planes keep (x0 x1 y0 y1; infinite: none) kept: the triangles kept go
+ * to *out (tri_decimate.h, its arrays allocated), w is emptied.  A tile
+ * whose decimated triangles cross themselves is decimated again at a
+ * quarter of tol, and written as extracted if that crosses too.  Returns
+ * the count. */
+struct tri_weld;
+struct tri_mesh;
+double fmm_weld_eps(const struct fmm *f);
+size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, const double keep[4],
+			 struct tri_mesh *out);
 
 /* Replaces, in the n triangles *v (9 doubles each, *cap allocated, as
  * xgrow), every rectangle of grid columns whose surface is one exactly

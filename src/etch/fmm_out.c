@@ -17,6 +17,7 @@
 #include "par.h"
 #include "surf.h"
 #include "tri_decimate.h"
+#include "tri_weld.h"
 #include "util.h"
 
 #include <math.h>
@@ -160,13 +161,25 @@ static void tile_keep(const struct fmm *f, const struct tiling *tl, int k, doubl
 		}
 }
 
-/* Whether the n triangles v cross themselves (surf_crossings, measure's
+double fmm_weld_eps(const struct fmm *f)
+{
+	/* iso.h computes an edge's crossing in each tetrahedron holding it,
+	 * equal to rounding: a billionth of a cell welds them, and places a
+	 * vertex on a box face (the caps are snapped onto the faces) */
+	return 1e-9 * fmax(f->h[0], fmax(f->h[1], f->h[2]));
+}
+
+/* Whether the triangles of m cross themselves (surf_crossings, measure's
  * test, in the rate box). */
-static int tile_crosses(const struct fmm *f, const double *v, size_t n)
+static int tile_crosses(const struct fmm *f, const struct tri_mesh *m)
 {
 	struct surf *s = surf_new(f->bounds);
-	for (size_t i = 0; i < n; i++)
-		surf_add(s, v + 9 * i);
+	for (size_t i = 0; i < m->nt; i++) {
+		double tri[9];
+		for (int c = 0; c < 3; c++)
+			memcpy(tri + 3 * c, m->p + 3 * (size_t)m->tv[3 * i + c], 3 * sizeof *tri);
+		surf_add(s, tri);
+	}
 	long c = surf_crossings(s, 1);
 	surf_free(s);
 	return c > 0;
@@ -177,32 +190,38 @@ static int tile_crosses(const struct fmm *f, const double *v, size_t n)
  * without bake) a sequence of them may push a triangle through another
  * that shares no vertex with it; a smaller bound moves less. */
 static const double TOL_STEPS[] = {1, 0.25};
+enum { NTOL_STEPS = sizeof TOL_STEPS / sizeof TOL_STEPS[0] };
 
-size_t fmm_decimate_tile(const struct fmm *f, double *v, size_t n, double tol, const double keep[4])
+size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, const double keep[4],
+			 struct tri_mesh *out)
 {
-	double h = fmax(f->h[0], fmax(f->h[1], f->h[2]));
-	double *dense = xreallocarray(NULL, 9 * n + 1, sizeof *dense);
-	memcpy(dense, v, 9 * n * sizeof *v);
-	size_t m = n;
-	for (size_t q = 0; q < sizeof TOL_STEPS / sizeof TOL_STEPS[0]; q++) {
-		if (q > 0)
-			memcpy(v, dense, 9 * n * sizeof *v);
-		/* iso.h computes an edge's crossing in each tetrahedron holding
-		 * it, equal to rounding: a billionth of a cell welds them, and
-		 * places a vertex on a box face (the caps are snapped onto the
-		 * faces) */
-		m = tri_decimate(v, n, TOL_STEPS[q] * tol, 1e-9 * h, f->bounds, 1e-9 * h, keep, NULL);
-		if (!tile_crosses(f, v, m))
+	double eps = fmm_weld_eps(f);
+	/* the welded tile as extracted, for a retry: welding its triangles
+	 * again in the same order gives the same vertices and numbering */
+	struct tri_mesh dense = {0};
+	dense.nv = tri_weld_take(w, &dense.p, &dense.tv, &dense.nt);
+	for (int q = 0; q < NTOL_STEPS; q++) {
+		for (size_t i = 0; i < dense.nt; i++) {
+			double tri[9];
+			for (int c = 0; c < 3; c++)
+				memcpy(tri + 3 * c, dense.p + 3 * (size_t)dense.tv[3 * i + c],
+				       3 * sizeof *tri);
+			tri_weld_add(w, tri);
+		}
+		tri_decimate_welded(w, TOL_STEPS[q] * tol, f->bounds, eps, keep, NULL, out);
+		if (!tile_crosses(f, out))
 			break;
+		tri_mesh_free(out);
 		/* the extracted triangles as they are, if every bound crosses
 		 * (marching tetrahedra of one field never do) */
-		if (q + 1 == sizeof TOL_STEPS / sizeof TOL_STEPS[0]) {
-			memcpy(v, dense, 9 * n * sizeof *v);
-			m = n;
+		if (q + 1 == NTOL_STEPS) {
+			*out = dense;
+			return out->nt;
 		}
 	}
-	free(dense);
-	return m;
+	tri_mesh_free(&dense);
+	return out->nt;
+}
 }
 
 /* The solution sampled at every refine[d]-th node: the rate grid (f
@@ -287,8 +306,9 @@ struct tiled {
 	double tol;
 	struct tiling tl;
 	const double *tmax;     /* per tile: the latest arrival time of its nodes */
-	struct tris *out;       /* per job (set q, tile k: q * ntiles + k) */
-	struct tris *scratch;   /* per worker: the dense soup of a tile */
+	struct tri_mesh *out;   /* per job (set q, tile k: q * ntiles + k) */
+	struct tri_weld *weld;  /* per worker: a tile's dense surface, welded as
+				 * it is extracted (its soup is never held) */
 };
 
 /* the cells of tile k along x and y (iso_surface_window's numbering: the
@@ -337,39 +357,42 @@ static int tile_same(const struct tiled *b, int q, size_t k)
 	return t0 > 0 && t1 > 0 && b->tmax[k] < t0 && b->tmax[k] < t1;
 }
 
+static void weld_collect(void *ctx, const double tri[9])
+{
+	tri_weld_add(ctx, tri);
+}
+
 static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 {
 	struct tiled *b = ctx;
 	size_t nt = (size_t)b->tl.ntile[0] * (size_t)b->tl.ntile[1];
-	struct tris *sc = &b->scratch[worker];
+	struct tri_weld *w = &b->weld[worker];
 	for (size_t j = lo; j < hi; j++) {
 		int q = (int)(j / nt), k = (int)(j % nt);
-		struct tris *o = &b->out[j];
-		o->n = 0;
+		struct tri_mesh *o = &b->out[j];
+		o->nt = 0;
 		if (tile_same(b, q, (size_t)k))
 			continue;
 		int c0[3], c1[3];
 		double keep[4];
 		tile_cells(b->f, &b->tl, k, c0, c1);
 		tile_keep(b->f, &b->tl, k, keep);
-		sc->n = 0;
-		surface_window(b->f, b->times[q], c0, c1, collect, sc);
-		size_t n = fmm_decimate_tile(b->f, sc->v, sc->n, b->tol, keep);
-		o->v = xreallocarray(o->v, 9 * n + 1, sizeof *o->v);
-		o->cap = 9 * n + 1;
-		memcpy(o->v, sc->v, 9 * n * sizeof *o->v);
-		o->n = n;
+		w->eps = fmm_weld_eps(b->f);
+		surface_window(b->f, b->times[q], c0, c1, weld_collect, w);
+		tri_mesh_free(o);
+		fmm_decimate_tile(b->f, w, b->tol, keep, o);
 	}
 }
 
 /* one set's tiles as one list of triangles (for the writers' get) */
 struct set_view {
-	const struct tris *tile;
+	const struct tri_mesh *tile;
 	const size_t *start;    /* ntiles + 1 prefix sums of the counts */
 	size_t nt;
 };
 
-static const double *view_tri(const struct set_view *sv, size_t i)
+/* triangle i of the set: its three corners' coordinates */
+static void view_tri(const struct set_view *sv, size_t i, const double *c[3])
 {
 	size_t lo = 0, hi = sv->nt;     /* the tile k with start[k] <= i < start[k + 1] */
 	while (hi - lo > 1) {
@@ -379,20 +402,25 @@ static const double *view_tri(const struct set_view *sv, size_t i)
 		else
 			hi = mid;
 	}
-	return sv->tile[lo].v + 9 * (i - sv->start[lo]);
+	const struct tri_mesh *m = &sv->tile[lo];
+	const int *tv = m->tv + 3 * (i - sv->start[lo]);
+	for (int s = 0; s < 3; s++)
+		c[s] = m->p + 3 * (size_t)tv[s];
 }
 
 static void view3(void *ctx, size_t i, double *c)
 {
-	const double *v = view_tri(ctx, i);
-	memcpy(c, v, 9 * sizeof *c);
-	memcpy(c + 9, v, 3 * sizeof *c);
+	const double *v[3];
+	view_tri(ctx, i, v);
+	for (int s = 0; s < 4; s++)
+		memcpy(c + 3 * s, v[s % 3], 3 * sizeof *c);
 }
 
 static void view2(void *ctx, size_t i, double *c)
 {
-	const double *v = view_tri(ctx, i);
-	double q[8] = {v[0], v[1], v[3], v[4], v[6], v[7], v[0], v[1]};
+	const double *v[3];
+	view_tri(ctx, i, v);
+	double q[8] = {v[0][0], v[0][1], v[1][0], v[1][1], v[2][0], v[2][1], v[0][0], v[0][1]};
 	memcpy(c, q, sizeof q);
 }
 
@@ -412,6 +440,17 @@ static void write_set(struct plot_writer *w3, struct plot_writer *w2, const stru
 	}
 }
 
+static void tri_mesh_copy(struct tri_mesh *to, const struct tri_mesh *from)
+{
+	tri_mesh_free(to);
+	to->p = xreallocarray(NULL, 3 * from->nv + 1, sizeof *to->p);
+	to->tv = xreallocarray(NULL, 3 * from->nt + 1, sizeof *to->tv);
+	memcpy(to->p, from->p, 3 * from->nv * sizeof *to->p);
+	memcpy(to->tv, from->tv, 3 * from->nt * sizeof *to->tv);
+	to->nv = from->nv;
+	to->nt = from->nt;
+}
+
 static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 			struct plot_writer *w3, struct plot_writer *w2, double tol)
 {
@@ -420,9 +459,9 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 	size_t nt = (size_t)b.tl.ntile[0] * (size_t)b.tl.ntile[1];
 	double *tmax = tile_tmax(f, &b.tl);
 	b.tmax = tmax;
-	struct tris *out = xcalloc((size_t)nb * nt, sizeof *out);
-	struct tris *last = xcalloc(nt, sizeof *last);  /* the previous set's tiles */
-	b.scratch = xcalloc((size_t)nb, sizeof *b.scratch);
+	struct tri_mesh *out = xcalloc((size_t)nb * nt, sizeof *out);
+	struct tri_mesh *last = xcalloc(nt, sizeof *last);      /* the previous set's tiles */
+	b.weld = xcalloc((size_t)nb, sizeof *b.weld);
 	size_t *start = xreallocarray(NULL, nt + 1, sizeof *start);
 	for (int k0 = 0; k0 < ntimes; k0 += nb) {
 		int m = ntimes - k0 < nb ? ntimes - k0 : nb;
@@ -431,35 +470,33 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 		b.out = out;
 		par_for((size_t)m * nt, 1, tile_range, &b);
 		for (int q = 0; q < m; q++) {
-			struct tris *set = out + (size_t)q * nt;
+			struct tri_mesh *set = out + (size_t)q * nt;
 			start[0] = 0;
 			for (size_t k = 0; k < nt; k++) {
 				if (tile_same(&b, q, k)) {
-					const struct tris *from = q > 0 ? &out[(size_t)(q - 1) * nt + k] : &last[k];
-					set[k].v = xreallocarray(set[k].v, 9 * from->n + 1, sizeof *set[k].v);
-					memcpy(set[k].v, from->v, 9 * from->n * sizeof *from->v);
-					set[k].n = from->n;
+					const struct tri_mesh *from = q > 0 ? &out[(size_t)(q - 1) * nt + k] : &last[k];
+					tri_mesh_copy(&set[k], from);
 				}
-				start[k + 1] = start[k] + set[k].n;
+				start[k + 1] = start[k] + set[k].nt;
 			}
 			struct set_view sv = {set, start, nt};
 			write_set(w3, w2, f, times[k0 + q], start[nt], view3, view2, &sv);
 		}
 		for (size_t k = 0; k < nt; k++) {       /* the batch's last set is kept */
-			struct tris x = last[k];
+			struct tri_mesh x = last[k];
 			last[k] = out[(size_t)(m - 1) * nt + k];
 			out[(size_t)(m - 1) * nt + k] = x;
 		}
 	}
 	for (size_t j = 0; j < (size_t)nb * nt; j++)
-		free(out[j].v);
+		tri_mesh_free(&out[j]);
 	for (size_t k = 0; k < nt; k++)
-		free(last[k].v);
+		tri_mesh_free(&last[k]);
 	for (int q = 0; q < nb; q++)
-		free(b.scratch[q].v);
+		tri_weld_free(&b.weld[q]);
 	free(out);
 	free(last);
-	free(b.scratch);
+	free(b.weld);
 	free(start);
 	free(tmax);
 }

@@ -22,13 +22,19 @@ void etch_fmm_refinement(const struct ratefile *r, const struct etch_opts *o, in
 		refine[2] = fmm_auto_refine(r);
 }
 
-void etch_run_fmm(const struct ratefile *r, const struct rfield *f,
-		  const struct etch_opts *o)
+void etch_run_fmm(struct ratefile *r, const struct rfield *f, const struct etch_opts *o)
 {
 	int refine[3];
 	etch_fmm_refinement(r, o, refine);
 	struct fmm *fm = o->seed ? fmm_solve_points(r, refine, &o->seedp[0][0], o->seed)
 				 : fmm_solve(r, refine);
+	/* the solution holds the rates it used (fm->rate): the file's go
+	 * before the surfaces are made (8 bytes a rate point, a third of
+	 * the memory left; f's box is all that is read of it below) */
+	for (int a = 0; a < r->narrays; a++) {
+		free(r->arrays[a].v);
+		r->arrays[a].v = NULL;
+	}
 	int n;
 	double *times = ptimes_make(o->et, o->pt, &n);
 	/* -last: only the final set is written */

@@ -7,7 +7,13 @@
 # (splat, bleach, etch, the pictures) from /usr/bin/time, and the total,
 # and the pictures' sizes (profile.ps, cut.ps, image.ps).
 # Targets: 40 um under 10 min wall and 8 GB, 20 um under
-# 2 min, fmm 20 um under 5 min.  Asserts nothing.
+# 2 min, fmm 20 um under 5 min; the users' (printed after the runs they
+# judge): "fmm 20 um peak under 2 GB" (fmm20, every stage's peak) and
+# "the 40 x 40 um array end to end under 90 s wall and 3 GB on two
+# cores, pictures included" (ray40 and fmm40; LARGE_RUNS=fmm40 needs
+# about 4 times fmm20's memory and CPU: see docs/performance.md, Large
+# masks).  tests/bench/fmm-large.sh compares fmm's etch alone with a base
+# revision.  Asserts nothing.
 #
 # Disk: the 40 um run writes 7 GB (a 3.1 GB rate file, a 1.7 GB
 # curves.plot); in fmm20, a 0.77 GB rate file, a 1.35 GB curves.plot
@@ -59,6 +65,7 @@ run() { # label size [sample3D options]
 	else
 		set -- -if mask.in "$@"
 	fi
+	echo "large: $label: load $(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null)"
 	start=$(date +%s.%N)
 	"$tmp/bin/sample3D" -q "$@" -bf "$ex/resist.in" -et 60 -last >log.txt 2>&1 ||
 		echo "large: $label: sample3D failed: $(tail -n 2 log.txt)"
@@ -74,7 +81,12 @@ run() { # label size [sample3D options]
 				if (s != "splat" && s != "bleach" && s != "etch") {
 					pe += e[s]; pc += c[s]; if (m[s] > pm) pm = m[s] } }
 			printf "large: %-22s %-7s %8.1f s wall %8.1f s CPU %8.0f MB\n", l, "plots", pe, pc, pm / 1024
-			printf "large: %-22s %-7s %8.1f s wall\n", l, "total", w }' "$tmp/times"
+			printf "large: %-22s %-7s %8.1f s wall\n", l, "total", w
+			for (s in m) if (m[s] > peak) peak = m[s]
+			if (l ~ /^20 um, fmm/)
+				printf "large: target \"fmm 20 um peak under 2 GB\": %.2f GB\n", peak / 1048576
+			if (l ~ /^40 um/)
+				printf "large: target \"the 40 x 40 um array end to end under 90 s wall and 3 GB on two cores, pictures included\" (%s): %.0f s wall, %.2f GB\n", l, w, peak / 1048576 }' "$tmp/times"
 	du -sm . | awk -v l="$label" '{ printf "large: %-22s files   %8d MB\n", l, $1 }'
 	# the pictures: their sizes, the largest file (the brief: at most
 	# 20 MB a file, and the plots at most a tenth of the run's wall time)

@@ -14,10 +14,18 @@
  *    its sag s = 1 - cos(half the longest edge's angle) inside the
  *    sphere: 1 - s - tol <= |r| <= 1 (1e-12); the volume within area x
  *    tol of the input's;
- *  - tol 0 only welds: the sphere comes back as it went in.
+ *  - tol 0 only welds: the sphere comes back as it went in;
+ *  - welded as it is made (tri_weld_add, triangle by triangle, its table
+ *    growing from 16 slots through rehashes) and decimated from there
+ *    (tri_decimate_welded, the kept triangles as vertices and indices),
+ *    the sphere, its corners moved by up to 0.4 of the weld distance so
+ *    that the weld decides (2562 vertices, the icosphere's), gives
+ *    tri_decimate's triangles on its soup exactly, at tol 0.03 and at
+ *    tol 0, and the welder is empty after.
  * Exact checks except where a tolerance is stated.
  */
 #include "tri_decimate.h"
+#include "tri_weld.h"
 #include "util.h"
 
 #include <math.h>
@@ -249,11 +257,57 @@ static void spheres(void)
 	free(in.v);
 }
 
+/* the triangles of m as a soup */
+static struct soup mesh_soup(const struct tri_mesh *m)
+{
+	struct soup s = {NULL, 0, 0};
+	for (size_t t = 0; t < m->nt; t++) {
+		const int *a = m->tv + 3 * t;
+		add(&s, m->p + 3 * (size_t)a[0], m->p + 3 * (size_t)a[1], m->p + 3 * (size_t)a[2]);
+	}
+	return s;
+}
+
+static void welded(void)
+{
+	const double weld = 1e-9;
+	struct soup in = sphere();
+	/* each corner moved by its own small amount: equal points are
+	 * one vertex only by the weld */
+	for (size_t i = 0; i < 9 * in.n; i++)
+		in.v[i] += 0.4 * weld * ((double)((i * 7919) % 11) - 5) / 5;
+	for (int k = 0; k < 2; k++) {
+		double tol = k == 0 ? 0.03 : 0;
+		struct soup s = {xreallocarray(NULL, 9 * in.n, sizeof *s.v), in.n, 9 * in.n};
+		memcpy(s.v, in.v, 9 * in.n * sizeof *s.v);
+		struct tri_decimate_stats st;
+		s.n = tri_decimate(s.v, s.n, tol, weld, NULL, 0, NULL, &st);
+		CHECK(st.vertices == 2562, "welded: %zu vertices, want the icosphere's 2562", st.vertices);
+		struct tri_weld w = {0};
+		w.eps = weld;
+		for (size_t t = 0; t < in.n; t++)
+			tri_weld_add(&w, in.v + 9 * t);
+		struct tri_mesh m = {0};
+		size_t n = tri_decimate_welded(&w, tol, NULL, 0, NULL, NULL, &m);
+		struct soup o = mesh_soup(&m);
+		CHECK(n == s.n && o.n == s.n && memcmp(o.v, s.v, 9 * s.n * sizeof *s.v) == 0,
+		      "welded, tol %g: %zu triangles, tri_decimate %zu, or others", tol, n, s.n);
+		CHECK(w.nv == 0 && w.nt == 0, "welded, tol %g: the welder holds %zu vertices after", tol, w.nv);
+		printf("welded: tol %g, %zu -> %zu triangles\n", tol, in.n, n);
+		tri_mesh_free(&m);
+		tri_weld_free(&w);
+		free(o.v);
+		free(s.v);
+	}
+	free(in.v);
+}
+
 int main(void)
 {
 	util_setprog("tri_decimate");
 	plane();
 	spheres();
+	welded();
 	if (nfail)
 		fprintf(stderr, "tri_decimate: %d checks failed\n", nfail);
 	return nfail != 0;

@@ -35,6 +35,7 @@
 #include "util.h"
 #include "vec3.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,7 +102,7 @@ static size_t ring(struct dmesh *m, int x, int **r, size_t *cap, int count)
 {
 	m->stamp++;
 	size_t k = 0;
-	for (long *pc = &m->head[x]; *pc >= 0;) {
+	for (int *pc = &m->head[x]; *pc >= 0;) {
 		long c = *pc, t = c / 3;
 		if (m->tv[3 * t] < 0) {
 			*pc = m->next[c];       /* a dead corner: unlinked for good */
@@ -392,9 +393,13 @@ static int cand_cmp(const void *a, const void *b)
 /* pushes u's cheapest collapse: with full 0 the cheapest by the cost
  * alone (checked in full when popped), 1 the cheapest that passes the
  * topology and shape checks (valid), 2 the cheapest that passes every
- * check (valid and points_ok) */
-static void consider(struct dmesh *m, struct heap *h, int u, int full)
+ * check (valid and points_ok).  failed >= 0: the collapse of u onto
+ * failed has just failed those checks on u's star as star_prep(m, u)
+ * left it, unchanged since: the star is not gathered again and that
+ * candidate is not weighed again (it would fail the same way) */
+static void consider_but(struct dmesh *m, struct heap *h, int u, int full, int failed, int prepped)
 {
+	m->checked[u] = 0;
 	m->exact[u] = full == 0;
 	if (m->flag[u] & (F_LOCKED | F_DEAD)) {
 		heap_remove(h, u);
@@ -404,7 +409,8 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 	if (full) {
 		/* the star valid needs anyway gives the neighbours too (their
 		 * order does not matter: the candidates are sorted) */
-		star_prep(m, u);
+		if (!prepped)
+			star_prep(m, u);
 		k = star_ring(m, u);
 	} else
 		k = ring_cnt(m, u, &m->nbr, &m->cnbr);
@@ -438,12 +444,22 @@ static void consider(struct dmesh *m, struct heap *h, int u, int full)
 	}
 	for (size_t i = 0; i < nc; i++) {
 		double c = m->cands[i].cost;
+		if (m->cands[i].v == failed)
+			continue;
 		if (valid(m, u, m->cands[i].v, &c, 1) && (full < 2 || dm_points_ok(m, u, m->cands[i].v))) {
 			heap_set(h, (struct entry){c, u, m->cands[i].v});
+			m->checked[u] = 1;
+			m->vu[u] = m->ver[u];
+			m->vv[u] = m->ver[m->cands[i].v];
 			return;
 		}
 	}
 	heap_remove(h, u);
+}
+
+static void consider(struct dmesh *m, struct heap *h, int u, int full)
+{
+	consider_but(m, h, u, full, -1, 0);
 }
 
 /* ---- edges at setup ---- */
@@ -554,6 +570,10 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	m.tmark = xcalloc(nt + 1, sizeof *m.tmark);
 	m.cnt = xcalloc(m.nv + 1, sizeof *m.cnt);
 	m.exact = xcalloc(m.nv + 1, 1);
+	m.ver = xcalloc(m.nv + 1, sizeof *m.ver);
+	m.checked = xcalloc(m.nv + 1, 1);
+	m.vu = xcalloc(m.nv + 1, sizeof *m.vu);
+	m.vv = xcalloc(m.nv + 1, sizeof *m.vv);
 	m.head = xreallocarray(NULL, m.nv + 1, sizeof *m.head);
 	m.next = xreallocarray(NULL, 3 * nt + 1, sizeof *m.next);
 	m.tol = tol;
@@ -584,7 +604,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	for (size_t i = 0; i < m.nv; i++)
 		m.ostart[i + 2] += m.ostart[i + 1];
 	for (size_t c = 0; c < 3 * nt; c++)
-		m.otri[m.ostart[m.tv[c] + 1]++] = c / 3;
+		m.otri[m.ostart[m.tv[c] + 1]++] = (int)(c / 3);
 	m.tol2 = 0.5 * tol * tol;
 	m.thead = xreallocarray(NULL, nt + 1, sizeof *m.thead);
 	m.pnext = xreallocarray(NULL, m.nv + 1, sizeof *m.pnext);
@@ -605,7 +625,7 @@ static void setup(struct dmesh *mp, size_t nt, double tol, const double box[6],
 	for (size_t c = 3 * nt; c-- > 0;) {
 		int w = m.tv[c];
 		m.next[c] = m.head[w];
-		m.head[w] = (long)c;
+		m.head[w] = (int)c;
 	}
 	for (size_t t = 0; t < nt; t++) {
 		const int *a = m.tv + 3 * t;
@@ -643,13 +663,18 @@ static void collapse_all(struct dmesh *mp)
 		 * the topology and shape alone (the input checks, which
 		 * rarely fail, run when the new entry is popped), or
 		 * those and the input checks */
-		star_prep(&m, e.u);
-		if (!valid(&m, e.u, e.v, &c, 0)) {
-			consider(&m, &h, e.u, 1);
-			continue;
+		/* an entry that passed valid with u's and v's stars as they
+		 * are now (their versions) passes it again */
+		int prepped = !(m.checked[e.u] && m.vu[e.u] == m.ver[e.u] && m.vv[e.u] == m.ver[e.v]);
+		if (prepped) {
+			star_prep(&m, e.u);
+			if (!valid(&m, e.u, e.v, &c, 0)) {
+				consider_but(&m, &h, e.u, 1, e.v, 1);
+				continue;
+			}
 		}
 		if (!dm_points_ok(&m, e.u, e.v)) {
-			consider(&m, &h, e.u, 2);
+			consider_but(&m, &h, e.u, 2, e.v, prepped);
 			continue;
 		}
 		dm_collapse(&m, e.u, e.v);
@@ -662,8 +687,13 @@ static void collapse_all(struct dmesh *mp)
 		 * same entry as a full consider) */
 		size_t k = ring_cnt(&m, e.v, &nb, &cnb);
 		xgrow(&nbc, &cnbc, k + 1, sizeof *nbc);
-		for (size_t i = 0; i < k; i++)
+		/* the stars that changed: v's and its neighbours' (every
+		 * triangle rewritten or dropped holds v now, or held u and v) */
+		m.ver[e.v]++;
+		for (size_t i = 0; i < k; i++) {
 			nbc[i] = m.cnt[nb[i]];  /* consider changes m.cnt */
+			m.ver[nb[i]]++;
+		}
 		for (size_t i = 0; i < k; i++) {
 			int w = nb[i];
 			long p = h.pos[w];
@@ -676,8 +706,10 @@ static void collapse_all(struct dmesh *mp)
 			if (!valid_cheap(&m, w, e.v, nbc[i], &c))
 				continue;
 			struct cand a = {c, e.v};
-			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0)
+			if (p < 0 || cand_cmp(&a, &(struct cand){h.e[p].cost, h.e[p].v}) < 0) {
 				heap_set(&h, (struct entry){c, w, e.v});
+				m.checked[w] = 0;
+			}
 		}
 	}
 	free(nb);
@@ -685,6 +717,53 @@ static void collapse_all(struct dmesh *mp)
 	free(h.e);
 	free(h.pos);
 	*mp = m;
+}
+
+/* the live triangles of m into v, 9 doubles each, in order */
+static size_t write_soup(const struct dmesh *m, double *v)
+{
+	size_t o = 0;
+	for (size_t t = 0; t < m->nt; t++) {
+		const int *a = m->tv + 3 * t;
+		if (a[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++)
+			memcpy(v + 9 * o + 3 * s, m->p + 3 * (size_t)a[s], 3 * sizeof *v);
+		o++;
+	}
+	return o;
+}
+
+/* the live triangles of m, in order, as a tri_mesh of the vertices they
+ * use (renumbered in the order of first use; m->mark is reused) */
+static size_t write_mesh(struct dmesh *m, struct tri_mesh *out)
+{
+	size_t nt = 0, nv = 0;
+	for (size_t t = 0; t < m->nt; t++)
+		nt += m->tv[3 * t] >= 0;
+	int *num = (int *)m->mark;      /* unsigned per vertex: the new numbers */
+	for (size_t i = 0; i < m->nv; i++)
+		num[i] = -1;
+	out->tv = xreallocarray(NULL, 3 * nt + 1, sizeof *out->tv);
+	size_t o = 0;
+	for (size_t t = 0; t < m->nt; t++) {
+		const int *a = m->tv + 3 * t;
+		if (a[0] < 0)
+			continue;
+		for (int s = 0; s < 3; s++) {
+			if (num[a[s]] < 0)
+				num[a[s]] = (int)nv++;
+			out->tv[3 * o + (size_t)s] = num[a[s]];
+		}
+		o++;
+	}
+	out->p = xreallocarray(NULL, 3 * nv + 1, sizeof *out->p);
+	for (size_t i = 0; i < m->nv; i++)
+		if (num[i] >= 0)
+			memcpy(out->p + 3 * (size_t)num[i], m->p + 3 * i, 3 * sizeof *out->p);
+	out->nv = nv;
+	out->nt = nt;
+	return nt;
 }
 
 static void dmesh_free(struct dmesh *m)
@@ -700,6 +779,10 @@ static void dmesh_free(struct dmesh *m)
 	free(m->stri);
 	free(m->cnt);
 	free(m->exact);
+	free(m->ver);
+	free(m->checked);
+	free(m->vu);
+	free(m->vv);
 	free(m->head);
 	free(m->next);
 	free(m->tv);
@@ -718,12 +801,20 @@ static void dmesh_free(struct dmesh *m)
 	free(m->pts);
 }
 
-size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
-		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+/* the welded mesh (p, nv, tv, n) decimated, taking over p and tv: its
+ * triangles kept go to soup (9 doubles each, at most n) or, with soup
+ * NULL, to mesh */
+static size_t decimate(double *p, size_t nv, int *tv, size_t n, double tol, const double box[6],
+		       double box_eps, const double keep[4], struct tri_decimate_stats *stp,
+		       double *soup, struct tri_mesh *mesh)
 {
 	struct tri_decimate_stats st = {0, 0, 0, 0, 0};
 	struct dmesh m = {0};
-	m.nv = tri_weld(v, n, weld_eps, &m.p, &m.tv);
+	if (n > INT_MAX / 3)    /* the corner lists are of int */
+		die("tri_decimate: %zu triangles, more than %d", n, INT_MAX / 3);
+	m.nv = nv;
+	m.p = p;
+	m.tv = tv;
 	/* drop the triangles welding made degenerate */
 	size_t nt = 0;
 	for (size_t t = 0; t < n; t++) {
@@ -743,18 +834,38 @@ size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const doub
 			st.locked++;
 	if (tol > 0)
 		collapse_all(&m);
-	size_t out = 0;
-	for (size_t t = 0; t < nt; t++) {
-		const int *a = m.tv + 3 * t;
-		if (a[0] < 0)
-			continue;
-		for (int s = 0; s < 3; s++)
-			memcpy(v + 9 * out + 3 * s, m.p + 3 * (size_t)a[s], 3 * sizeof *v);
-		out++;
-	}
-	st.out = out;
+	size_t o = soup ? write_soup(&m, soup) : write_mesh(&m, mesh);
+	st.out = o;
 	if (stp)
 		*stp = st;
 	dmesh_free(&m);
-	return out;
+	return o;
+}
+
+size_t tri_decimate(double *v, size_t n, double tol, double weld_eps, const double box[6],
+		    double box_eps, const double keep[4], struct tri_decimate_stats *stp)
+{
+	double *p;
+	int *tv;
+	size_t nv = tri_weld(v, n, weld_eps, &p, &tv);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, stp, v, NULL);
+}
+
+size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
+			   const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out)
+{
+	double *p;
+	int *tv;
+	size_t n;
+	size_t nv = tri_weld_take(w, &p, &tv, &n);
+	return decimate(p, nv, tv, n, tol, box, box_eps, keep, st, NULL, out);
+}
+
+void tri_mesh_free(struct tri_mesh *m)
+{
+	free(m->p);
+	free(m->tv);
+	m->p = NULL;
+	m->tv = NULL;
+	m->nv = m->nt = 0;
 }

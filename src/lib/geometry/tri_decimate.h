@@ -55,4 +55,22 @@ struct tri_decimate_stats {
 size_t tri_decimate(double *v, size_t n, double tol, double weld, const double box[6],
 		    double box_eps, const double keep[4], struct tri_decimate_stats *st);
 
+/* A decimated surface as vertices and triangles, a third of its soup's
+ * memory: the vertices the triangles use, in the order of first use. */
+struct tri_mesh {
+	double *p;              /* 3 per vertex */
+	int *tv;                /* 3 vertex numbers per triangle */
+	size_t nv, nt;
+};
+void tri_mesh_free(struct tri_mesh *m);
+
+/* The same on the triangles welded so far by w (tri_weld.h; its weld
+ * distance is the welding's), so that their soup is never held: the
+ * kept triangles, as tri_decimate keeps them, go to *out (its arrays
+ * allocated, the caller's to free), the count is returned, and w is
+ * empty again. */
+struct tri_weld;
+size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
+			   const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out);
+
 #endif

@@ -217,7 +217,7 @@ void dm_collapse(struct dmesh *m, int u, int v)
 			else {
 				tv[c % 3] = v;
 				m->next[c] = m->head[v];
-				m->head[v] = c;
+				m->head[v] = (int)c;
 			}
 		}
 		c = nx;
@@ -226,7 +226,7 @@ void dm_collapse(struct dmesh *m, int u, int v)
 	m->flag[u] |= F_DEAD;
 	/* v's list without its dead corners (they would pile up on the
 	 * vertices that absorb many) */
-	long *pc = &m->head[v];
+	int *pc = &m->head[v];
 	while (*pc >= 0) {
 		if (m->tv[3 * (*pc / 3)] < 0)
 			*pc = m->next[*pc];

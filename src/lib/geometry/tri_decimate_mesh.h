@@ -22,12 +22,14 @@ struct dmesh {
 	unsigned char *face;    /* box faces a vertex lies on, bit f for bounds[f] */
 	unsigned char *flag;    /* F_* */
 	int *tv;                /* 3 vertex per triangle, -1: dead triangle */
-	long *head, *next;      /* corner lists: head per vertex, next per corner */
+	int *head, *next;       /* corner lists: head per vertex, next per corner (int: a
+				 * tile has fewer than 2^31 corners, tri_decimate checks) */
 	double tol, tol2;
 	int *thead;             /* per triangle: the first input vertex it answers for */
 	int *pnext;             /* per vertex: the next one of the same triangle */
 	int *otv;               /* the input triangles (welded) */
-	size_t *ostart, *otri;  /* per vertex: its input triangles (CSR) */
+	size_t *ostart;         /* per vertex: its input triangles (CSR) */
+	int *otri;
 	float *osph;            /* per input triangle: a bounding sphere, centre
 				 * and radius (rounded outwards) */
 	/* scratch */
@@ -44,6 +46,10 @@ struct dmesh {
 	int *cnt;               /* per vertex: triangles shared with consider's u */
 	unsigned char *exact;   /* per vertex: its heap entry (or none) is what
 				 * consider(u, 0) would give now */
+	unsigned *ver;          /* per vertex: bumped when its star changes */
+	unsigned char *checked; /* per vertex: its entry passed valid when its
+				 * and its target's versions were vu, vv */
+	unsigned *vu, *vv;
 	int *ring, *ring2;
 	size_t cring, cring2;
 	struct star_tri *stri;  /* star_prep's: the star of su */
