@@ -24,13 +24,25 @@
  * deloop_util.h).  Delooped once at the end and at two print times
  * (each set a delooped copy of the advancing mesh); measured: 21 loops,
  * no node behind by more than 0.0047 um.
+ *
+ * The second case has sharp trenches, as at the edge of an image: R0 =
+ * 0.1, R1 = 3 um/s, centres at +-0.35 um, W = 0.004 um^2 (the rate
+ * changes several-fold within a cell of the rate grid), etched 1.5 s and
+ * delooped once.  Where the rate changes so fast the verdict depends on
+ * how the classifier's arrival times sit in the steep cells: before the
+ * fast-marching solve used the mean slowness over a cell (89fe253) the
+ * loops there passed for front, none was removed, and 4.9 % of the
+ * nodes stayed in developed resist, up to 0.09 um behind the refined
+ * front (etch of 89fe253^ on this rate file); measured now: 4 loops
+ * removed, no node behind by more than TOL.
  */
 #include "deloop_util.h"
 
-#define R0 0.3         /* um/s, the top's rate */
-#define R1 1.0          /* um/s, the trenches' peak rate above it */
-#define X0 0.45         /* um, the trenches' centres at x = +-X0 */
-#define W 0.02          /* um^2, g's width */
+/* a case: the top's rate R0 and the trenches' peak rate above it R1
+ * (um/s), their centres at x = +-X0 (um) and g's width W (um^2) */
+struct trench { double r0, r1, x0, w; };
+static const struct trench SMOOTH = {0.3, 1.0, 0.45, 0.02};
+static const struct trench SHARP = {0.1, 3.0, 0.35, 0.004};
 #define REFINE 4
 #define TOL 0.01        /* um: see above */
 
@@ -42,7 +54,7 @@ static void check(int ok, const char *what, double got, double want)
 	bad += !ok;
 }
 
-static struct ratefile *trenches(void)
+static struct ratefile *trenches(const struct trench *c)
 {
 	double b[6] = {-1, 1, -0.3, 0.3, -1, 0};
 	struct ratefile *r = fmt_rate_new(41, 13, 21, b);
@@ -51,16 +63,18 @@ static struct ratefile *trenches(void)
 		for (int j = 0; j < r->ny; j++)
 			for (int i = 0; i < r->nx; i++) {
 				double x = fmt_rate_x(r, i);
-				v[fmt_rate_index(r, i, j, k)] = R0 + R1 * (exp(-(x - X0) * (x - X0) / W) +
-									   exp(-(x + X0) * (x + X0) / W));
+				double u = x - c->x0, w = x + c->x0;
+				v[fmt_rate_index(r, i, j, k)] = c->r0 + c->r1 * (exp(-u * u / c->w) +
+										 exp(-w * w / c->w));
 			}
 	return r;
 }
 
-static void run(double et, double pt)
+static void run(const struct trench *c, double et, double pt)
 {
-	printf("two trenches, %g s (print times every %g s), delooped:\n", et, pt);
-	struct ratefile *r = trenches();
+	printf("two trenches (R0 %g, R1 %g um/s, X0 %g um, W %g um^2), %g s (print times every "
+	       "%g s), delooped:\n", c->r0, c->r1, c->x0, c->w, et, pt);
+	struct ratefile *r = trenches(c);
 	struct rfield f;
 	fmt_rate_field(&f, r, "trenches");
 	double seg = etch_default_seg(&f);
@@ -100,7 +114,8 @@ static void run(double et, double pt)
 
 int main(void)
 {
-	run(1.5, 0);
-	run(1.5, 0.75);
+	run(&SMOOTH, 1.5, 0);
+	run(&SMOOTH, 1.5, 0.75);
+	run(&SHARP, 1.5, 0);
 	return bad;
 }
