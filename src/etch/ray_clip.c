@@ -93,16 +93,11 @@ void clip_mesh(struct mesh *m, const struct rfield *f, struct etch_stats *st)
 					break;
 				}
 		}
-		/* nodes left on the face are on it: pin them there; so is a
-		 * node flagged on a side wall that a ray bent back inside
-		 * since it stepped out (ray_advance.c) */
+		/* nodes left on the face are on it: pin them there */
 		for (size_t n = 0; n < m->nnode; n++) {
 			struct node *nd = &m->node[n];
-			if (!nd->alive || face == 4)
-				continue;
-			int sd = side(nd->p[ax], v, upper, eps);
-			if ((sd == 0 && !(nd->flags & face_flag[face])) ||
-			    (sd < 0 && face < 4 && (nd->flags & face_flag[face]))) {
+			if (nd->alive && side(nd->p[ax], v, upper, eps) == 0 &&
+			    !(nd->flags & face_flag[face]) && face != 4) {
 				nd->p[ax] = v;
 				nd->flags |= face_flag[face];
 			}
