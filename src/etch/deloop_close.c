@@ -297,6 +297,21 @@ static int arriving(const struct mesh *m, int a, size_t ns)
 	return 0;
 }
 
+/* Whether the chord from a to b (the ends of an open stretch on one face)
+ * may close the stretch: no segment there yet, or a border segment on the
+ * face whose one triangle traverses it from a to b, the way the stretch's
+ * own triangles go round (a notch cut into the surface's edge on the wall:
+ * its two open sides meet the wall at the ends of one edge segment; the
+ * car-krf-lines example kept such notches open). */
+static int chord_free(const struct mesh *m, int a, int b)
+{
+	int e = mesh_find_segment(m, a, b);
+	if (e < 0)
+		return 1;
+	const struct segment *sg = &m->seg[e];
+	return sg->t[0] >= 0 && sg->t[1] < 0 && !deloop_border_open(m, e) && border_from(m, e) == a;
+}
+
 /* One closing: the open border walked segment by segment, each segment
  * once; a walk that comes back to a node on its path has gone round a
  * loop, which is cut off the path and closed (a border passing twice
@@ -345,7 +360,7 @@ static long close_all(struct mesh *m, int way, int **tris, int **loop, size_t *n
 			s = leaving(m, v[nv - 1], seen, ns);
 		}
 		unsigned face = m->node[v[0]].flags & m->node[v[nv - 1]].flags & (ON_WALLS | ON_SUB);
-		if (nv >= 3 && s < 0 && face && mesh_find_segment(m, v[0], v[nv - 1]) < 0) {
+		if (nv >= 3 && s < 0 && face && chord_free(m, v[nv - 1], v[0])) {
 			xgrow(&w, &capw, nv, sizeof *w);
 			memcpy(w, v, nv * sizeof *w);
 			loops += take_loop(m, w, (int)nv, way, loops, tris, loop, ntris, &cap, &capl);

@@ -96,6 +96,7 @@ struct etch_stats {
 	long seam_joined;       /* seam segments joined (deloop_zip.c) */
 	double open_cut, open_left;     /* open border (um) after the cuts of the
 					 * last deloop, before joining, and after */
+	double open_worst;      /* the most open border (um) of a set written */
 };
 
 /* cell_methods.c: -method cell and huygens, the thesis' cell methods in 3D

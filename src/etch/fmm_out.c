@@ -222,7 +222,6 @@ size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, co
 	tri_mesh_free(&dense);
 	return out->nt;
 }
-}
 
 /* The solution sampled at every refine[d]-th node: the rate grid (f
  * itself without refinement: the caller frees only a copy). */

@@ -202,6 +202,7 @@ static struct mesh *closed_copy(const struct mesh *m, struct fmm *fm,
 	deloop_close_open(c, fm, f, t, &rep);
 	mesh_compact(c);
 	st->open_left = rep.open_left;
+	st->open_worst = fmax(st->open_worst, rep.open_left);
 	st->deloop_s += (double)(clock() - c0) / CLOCKS_PER_SEC;
 	return c;
 }
@@ -356,8 +357,8 @@ void etch_report(const struct etch_opts *o, const struct rfield *f,
 			fprintf(stderr, "%s: deloop: %ld passes removed %ld loops (%ld "
 				"triangles) in %.3g s (classifier %.3g s); %ld crossings "
 				"left, %ld seam segments joined, %.3g um of border left "
-				"open\n", util_prog(), st->deloops, st->loops, st->looped_tris,
-				st->deloop_s, st->deloop_fmm_s, st->crossings_left,
-				st->seam_joined, st->open_left);
+				"open (the most of any set written)\n", util_prog(), st->deloops,
+				st->loops, st->looped_tris, st->deloop_s, st->deloop_fmm_s,
+				st->crossings_left, st->seam_joined, st->open_worst);
 	}
 }

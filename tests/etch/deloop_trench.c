@@ -24,13 +24,25 @@
  * deloop_util.h).  Delooped once at the end and at two print times
  * (each set a delooped copy of the advancing mesh); measured: 21 loops,
  * no node behind by more than 0.0047 um.
+ *
+ * The second case has sharp trenches, as at the edge of an image: R0 =
+ * 0.1, R1 = 3 um/s, centres at +-0.35 um, W = 0.004 um^2 (the rate
+ * changes several-fold within a cell of the rate grid), etched 1.5 s and
+ * delooped once.  Where the rate changes so fast the verdict depends on
+ * how the classifier's arrival times sit in the steep cells: before the
+ * fast-marching solve used the mean slowness over a cell (89fe253) the
+ * loops there passed for front, none was removed, and 4.9 % of the
+ * nodes stayed in developed resist, up to 0.09 um behind the refined
+ * front (etch of 89fe253^ on this rate file); measured now: 4 loops
+ * removed, no node behind by more than TOL.
  */
 #include "deloop_util.h"
 
-#define R0 0.3         /* um/s, the top's rate */
-#define R1 1.0          /* um/s, the trenches' peak rate above it */
-#define X0 0.45         /* um, the trenches' centres at x = +-X0 */
-#define W 0.02          /* um^2, g's width */
+/* a case: the top's rate R0 and the trenches' peak rate above it R1
+ * (um/s), their centres at x = +-X0 (um) and g's width W (um^2) */
+struct trench { double r0, r1, x0, w; };
+static const struct trench SMOOTH = {0.3, 1.0, 0.45, 0.02};
+static const struct trench SHARP = {0.1, 3.0, 0.35, 0.004};
 #define REFINE 4
 #define TOL 0.01        /* um: see above */
 
@@ -42,7 +54,7 @@ static void check(int ok, const char *what, double got, double want)
 	bad += !ok;
 }
 
-static struct ratefile *trenches(void)
+static struct ratefile *trenches(const struct trench *c)
 {
 	double b[6] = {-1, 1, -0.3, 0.3, -1, 0};
 	struct ratefile *r = fmt_rate_new(41, 13, 21, b);
@@ -51,17 +63,19 @@ static struct ratefile *trenches(void)
 		for (int j = 0; j < r->ny; j++)
 			for (int i = 0; i < r->nx; i++) {
 				double x = fmt_rate_x(r, i);
-				v[fmt_rate_index(r, i, j, k)] = R0 + R1 * (exp(-(x - X0) * (x - X0) / W) +
-									   exp(-(x + X0) * (x + X0) / W));
+				double u = x - c->x0, w = x + c->x0;
+				v[fmt_rate_index(r, i, j, k)] = c->r0 + c->r1 * (exp(-u * u / c->w) +
+										 exp(-w * w / c->w));
 			}
 	return r;
 }
 
-/* fm: the refined solve of trenches(), shared by the runs */
-static void run(double et, double pt, const struct fmm *fm)
+/* r: the rates of case c, fm: their refined solve, shared by the runs */
+static void run(const struct trench *c, const struct ratefile *r, const struct fmm *fm, double et,
+		double pt)
 {
-	printf("two trenches, %g s (print times every %g s), delooped:\n", et, pt);
-	struct ratefile *r = trenches();
+	printf("two trenches (R0 %g, R1 %g um/s, X0 %g um, W %g um^2), %g s (print times every "
+	       "%g s), delooped:\n", c->r0, c->r1, c->x0, c->w, et, pt);
 	struct rfield f;
 	fmt_rate_field(&f, r, "trenches");
 	double seg = etch_default_seg(&f);
@@ -93,17 +107,20 @@ static void run(double et, double pt, const struct fmm *fm)
 	check(left == 0, "crossings left (independent counter)", (double)left, 0);
 	check(behind == 0, "nodes behind the refined front by more than TOL", (double)behind, 0);
 	mesh_free(m);
-	fmt_rate_free(r);
 }
 
 int main(void)
 {
-	struct ratefile *r = trenches();
-	int refine[3] = {REFINE, REFINE, REFINE};
-	struct fmm *fm = fmm_solve(r, refine);
-	run(1.5, 0, fm);
-	run(1.5, 0.75, fm);
-	fmm_free(fm);
-	fmt_rate_free(r);
+	const struct trench *cases[] = {&SMOOTH, &SHARP};
+	for (int k = 0; k < 2; k++) {
+		struct ratefile *r = trenches(cases[k]);
+		int refine[3] = {REFINE, REFINE, REFINE};
+		struct fmm *fm = fmm_solve(r, refine);
+		run(cases[k], r, fm, 1.5, 0);
+		if (cases[k] == &SMOOTH)
+			run(cases[k], r, fm, 1.5, 0.75);
+		fmm_free(fm);
+		fmt_rate_free(r);
+	}
 	return bad;
 }
