@@ -185,13 +185,36 @@ static void cut_index_build(const struct fmm *f, double t, struct cut_index *x)
 	free(fill);
 }
 
+/* The squared distance from p to grid cell c (its box, in the grid's
+ * coordinates) */
+static double cell_dist2(const struct fmm *f, const int c[3], const double p[3])
+{
+	double e = 0;
+	for (int d = 0; d < 3; d++) {
+		double a = f->bounds[2 * d] + c[d] * f->h[d], b = a + f->h[d];
+		double g = p[d] < a ? a - p[d] : p[d] > b ? p[d] - b : 0;
+		e += g * g;
+	}
+	return e;
+}
+
 /* The triangles of the block of nodes lo..hi (nb per axis, spanning b)
  * with the block's own coordinates: what iso_surface over the block
- * emits, cell by cell, but only for the cut cells the index lists. */
+ * emits, cell by cell, but only for the cut cells the index lists, and
+ * of those only the cells that can hold a triangle nearer than both lim
+ * and the nearest so far (the box of the cell, widened by slack for the
+ * rounding of the block's coordinates): the nearest distance at or
+ * below lim is the one the whole block gives, to the last bit. */
 static void block_from_index(const struct fmm *f, const struct cut_index *x,
 			     struct dist_scratch *s, const int lo[3], const int hi[3],
-			     const int nb[3], const double b[6], double t, struct nearest *nr)
+			     const int nb[3], const double b[6], double t, double lim,
+			     struct nearest *nr)
 {
+	double slack = 0;
+	for (int d = 0; d < 3; d++)
+		slack = fmax(slack, 1e-6 * f->h[d] + 1e-12 * (fabs(f->bounds[2 * d]) +
+							      fabs(f->bounds[2 * d + 1]) +
+							      fabs(nr->p[d])));
 	size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
 	if (nn > s->cap) {      /* no realloc: the old values need no copy */
 		free(s->v);
@@ -214,6 +237,9 @@ static void block_from_index(const struct fmm *f, const struct cut_index *x,
 					const int *c = x->cell[e];
 					if (c[0] < lo[0] || c[0] >= hi[0] || c[1] < lo[1] ||
 					    c[1] >= hi[1] || c[2] < lo[2] || c[2] >= hi[2])
+						continue;
+					double reach = fmin(lim, sqrt(nr->best2)) + slack;
+					if (cell_dist2(f, c, nr->p) > reach * reach)
 						continue;
 					int c0[3] = {c[0] - lo[0], c[1] - lo[1], c[2] - lo[2]};
 					int c1[3] = {c0[0] + 1, c0[1] + 1, c0[2] + 1};
@@ -261,7 +287,7 @@ static double surface_distance(const struct fmm *f, const struct cut_index *x,
 			return INFINITY;
 		struct nearest nr = {p, INFINITY};
 		if (x) {
-			block_from_index(f, x, s, lo, hi, nb, b, t, &nr);
+			block_from_index(f, x, s, lo, hi, nb, b, t, whole ? INFINITY : radius, &nr);
 		} else {
 			size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
 			double *v = xreallocarray(NULL, nn, sizeof *v);
