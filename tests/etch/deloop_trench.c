@@ -73,23 +73,24 @@ static void run(double et, double pt)
 	struct mesh *m = etch_run(&f, &o, &st);
 	int refine[3] = {REFINE, REFINE, REFINE};
 	struct fmm *fm = fmm_solve(r, refine);
-	long behind = 0;
+	long behind = 0, n = 0;
 	double worst = 0;
 	/* the live nodes above the substrate's band, their distances found
 	 * together (the surface's cut cells indexed once) */
 	double *p = xreallocarray(NULL, m->nnode + 1, 3 * sizeof *p);
-	size_t n = 0;
+	size_t np = 0;
 	for (size_t i = 0; i < m->nnode; i++) {
 		const struct node *nd = &m->node[i];
 		if (nd->alive && nd->p[2] >= r->zmin + seg)
-			memcpy(p + 3 * n++, nd->p, 3 * sizeof *p);
+			memcpy(p + 3 * np++, nd->p, 3 * sizeof *p);
 	}
-	double *dist = xreallocarray(NULL, n + 1, sizeof *dist);
-	fmm_distance_many(fm, p, n, et, dist);
-	for (size_t i = 0; i < n; i++) {
+	double *dist = xreallocarray(NULL, np + 1, sizeof *dist);
+	fmm_distance_many(fm, p, np, et, dist);
+	for (size_t i = 0; i < np; i++) {
 		double d = dist[i];
 		if (fmm_time_at(fm, p + 3 * i) < et)
 			d = -d;
+		n++;
 		behind += d < -TOL;
 		worst = fmin(worst, d);
 	}
@@ -98,7 +99,7 @@ static void run(double et, double pt)
 	long left = crossings_independent(m);
 	printf("  seg %g um, %zu triangles, %ld loops removed; %ld of %ld nodes more than %g um "
 	       "behind the refined front, the farthest %.3g um\n", seg, m->live_tri, st.loops,
-	       behind, (long)n, TOL, -worst);
+	       behind, n, TOL, -worst);
 	check(st.loops >= 1, "loops removed", (double)st.loops, 1);
 	check(left == 0, "crossings left (independent counter)", (double)left, 0);
 	check(behind == 0, "nodes behind the refined front by more than TOL", (double)behind, 0);
