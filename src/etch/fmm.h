@@ -129,9 +129,14 @@ double fmm_rate_at(const struct fmm *f, const double p[3]);
  * too.  Returns FMM_UNREACHED if T is flat or unreached at p. */
 double fmm_distance(const struct fmm *f, const double p[3], double t);
 
+/* fmm_distance of n points (x y z triples) into d[0..n-1], the same
+ * values to the last bit, the cells the surface cuts found once for all
+ * points; the points shared among the threads (par.h). */
+void fmm_distance_many(const struct fmm *f, const double *p, size_t n, double t, double *d);
+
 /* The median and 95th percentile (nearest rank) of fmm_distance over n
- * points (x y z triples): the cross-check statistic of etch's two
- * engines.  n = 0 gives 0 and 0. */
+ * points (x y z triples), found by fmm_distance_many: the cross-check
+ * statistic of etch's two engines.  n = 0 gives 0 and 0. */
 void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t,
 			double *median, double *p95);
 

@@ -13,9 +13,14 @@
  * triangles of the surface inside that ball are then searched for the
  * nearest, which makes the answer the Euclidean distance to the written
  * surface also where T has kinks (fronts that met) and the gradient line
- * goes astray.
+ * goes astray.  For many points (fmm_distance_many, the cross-check's
+ * statistic) the cells the surface cuts are listed once, bucketed, and
+ * each point's search extracts only those of its block: the same
+ * triangles, so the same distances, at a small part of the cost.
  */
 #include "fmm.h"
+#include "iso.h"
+#include "par.h"
 #include "surf.h"
 #include "util.h"
 
@@ -113,11 +118,153 @@ static void nearest_emit(void *ctx, const double tri[9])
  * isosurface work). */
 #define MAX_BLOCK_CELLS 4000000.0
 
+/* Cells per axis of a bucket of the cut-cell index. */
+enum { CUT_BUCKET = 4 };
+
+/* The cells of the grid that the surface T = t cuts (some corners below
+ * t, some not: the only cells marching tetrahedra emits triangles in),
+ * bucketed by CUT_BUCKET^3 blocks of cells: built once for many points,
+ * so that a point's block search visits its cut cells, not every cell. */
+struct cut_index {
+	int nb[3];              /* buckets per axis */
+	size_t *start;          /* bucket b's cells: cell[start[b]] to cell[start[b + 1]] */
+	int (*cell)[3];         /* lower corners of the cut cells, bucket by bucket */
+};
+
+/* A worker's block of values (block-sized, written only at the corners
+ * of the cells it extracts). */
+struct dist_scratch {
+	double *v;
+	size_t cap;
+};
+
+static int cell_cut(const struct fmm *f, int i, int j, int k, double t)
+{
+	size_t sy = (size_t)f->n[0], sz = sy * (size_t)f->n[1];
+	const double *c = f->t + (size_t)k * sz + (size_t)j * sy + (size_t)i;
+	int below = 0;
+	for (int q = 0; q < 8; q++)
+		below += c[(q & 1) + ((q >> 1) & 1) * sy + ((q >> 2) & 1) * sz] < t;
+	return below > 0 && below < 8;
+}
+
+static size_t bucket_of(const struct cut_index *x, int i, int j, int k)
+{
+	return ((size_t)(k / CUT_BUCKET) * (size_t)x->nb[1] + (size_t)(j / CUT_BUCKET)) *
+		       (size_t)x->nb[0] + (size_t)(i / CUT_BUCKET);
+}
+
+/* The index of the cells cut by T = t (f has two nodes or more per axis). */
+static void cut_index_build(const struct fmm *f, double t, struct cut_index *x)
+{
+	size_t nbk = 1;
+	for (int d = 0; d < 3; d++) {
+		x->nb[d] = (f->n[d] - 1 + CUT_BUCKET - 1) / CUT_BUCKET;
+		nbk *= (size_t)x->nb[d];
+	}
+	x->start = xreallocarray(NULL, nbk + 1, sizeof *x->start);
+	memset(x->start, 0, (nbk + 1) * sizeof *x->start);
+	/* two passes: count the cut cells per bucket, then place them */
+	for (int k = 0; k < f->n[2] - 1; k++)
+		for (int j = 0; j < f->n[1] - 1; j++)
+			for (int i = 0; i < f->n[0] - 1; i++)
+				if (cell_cut(f, i, j, k, t))
+					x->start[bucket_of(x, i, j, k) + 1]++;
+	for (size_t b = 0; b < nbk; b++)
+		x->start[b + 1] += x->start[b];
+	x->cell = xreallocarray(NULL, x->start[nbk] + 1, sizeof *x->cell);
+	size_t *fill = xreallocarray(NULL, nbk, sizeof *fill);
+	memcpy(fill, x->start, nbk * sizeof *fill);
+	for (int k = 0; k < f->n[2] - 1; k++)
+		for (int j = 0; j < f->n[1] - 1; j++)
+			for (int i = 0; i < f->n[0] - 1; i++)
+				if (cell_cut(f, i, j, k, t)) {
+					int *c = x->cell[fill[bucket_of(x, i, j, k)]++];
+					c[0] = i, c[1] = j, c[2] = k;
+				}
+	free(fill);
+}
+
+/* The squared distance from p to grid cell c (its box, in the grid's
+ * coordinates) */
+static double cell_dist2(const struct fmm *f, const int c[3], const double p[3])
+{
+	double e = 0;
+	for (int d = 0; d < 3; d++) {
+		double a = f->bounds[2 * d] + c[d] * f->h[d], b = a + f->h[d];
+		double g = p[d] < a ? a - p[d] : p[d] > b ? p[d] - b : 0;
+		e += g * g;
+	}
+	return e;
+}
+
+/* The triangles of the block of nodes lo..hi (nb per axis, spanning b)
+ * with the block's own coordinates: what iso_surface over the block
+ * emits, cell by cell, but only for the cut cells the index lists, and
+ * of those only the cells that can hold a triangle nearer than both lim
+ * and the nearest so far (the box of the cell, widened by slack for the
+ * rounding of the block's coordinates): the nearest distance at or
+ * below lim is the one the whole block gives, to the last bit. */
+static void block_from_index(const struct fmm *f, const struct cut_index *x,
+			     struct dist_scratch *s, const int lo[3], const int hi[3],
+			     const int nb[3], const double b[6], double t, double lim,
+			     struct nearest *nr)
+{
+	double slack = 0;
+	for (int d = 0; d < 3; d++)
+		slack = fmax(slack, 1e-6 * f->h[d] + 1e-12 * (fabs(f->bounds[2 * d]) +
+							      fabs(f->bounds[2 * d + 1]) +
+							      fabs(nr->p[d])));
+	size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
+	if (nn > s->cap) {      /* no realloc: the old values need no copy */
+		free(s->v);
+		s->v = xreallocarray(NULL, nn, sizeof *s->v);
+		s->cap = nn;
+	}
+	size_t sy = (size_t)f->n[0], sz = sy * (size_t)f->n[1];
+	size_t by = (size_t)nb[0], bz = by * (size_t)nb[1];
+	int b0[3], b1[3];
+	for (int d = 0; d < 3; d++) {
+		b0[d] = lo[d] / CUT_BUCKET;
+		b1[d] = (hi[d] - 1) / CUT_BUCKET;
+	}
+	for (int bk = b0[2]; bk <= b1[2]; bk++)
+		for (int bj = b0[1]; bj <= b1[1]; bj++)
+			for (int bi = b0[0]; bi <= b1[0]; bi++) {
+				size_t q = ((size_t)bk * (size_t)x->nb[1] + (size_t)bj) *
+						   (size_t)x->nb[0] + (size_t)bi;
+				for (size_t e = x->start[q]; e < x->start[q + 1]; e++) {
+					const int *c = x->cell[e];
+					if (c[0] < lo[0] || c[0] >= hi[0] || c[1] < lo[1] ||
+					    c[1] >= hi[1] || c[2] < lo[2] || c[2] >= hi[2])
+						continue;
+					double reach = fmin(lim, sqrt(nr->best2)) + slack;
+					if (cell_dist2(f, c, nr->p) > reach * reach)
+						continue;
+					int c0[3] = {c[0] - lo[0], c[1] - lo[1], c[2] - lo[2]};
+					int c1[3] = {c0[0] + 1, c0[1] + 1, c0[2] + 1};
+					for (int r = 0; r < 8; r++) {
+						int u = r & 1, w = (r >> 1) & 1, z = (r >> 2) & 1;
+						s->v[(size_t)(c0[2] + z) * bz + (size_t)(c0[1] + w) * by +
+						     (size_t)(c0[0] + u)] =
+							f->t[(size_t)(c[2] + z) * sz + (size_t)(c[1] + w) * sy +
+							     (size_t)(c[0] + u)];
+					}
+					iso_surface_window(s->v, NULL, nb[0], nb[1], nb[2], b, t, 0, c0, c1,
+							   nearest_emit, nr);
+				}
+			}
+}
+
 /* The distance from p to the triangulated surface T = t (the triangles
  * fmm_surface writes, without the caps), searched in blocks of cells
  * around p that double until the nearest triangle lies inside the ball
- * the block contains; INFINITY if none within the largest block. */
-static double surface_distance(const struct fmm *f, const double p[3], double t, double radius)
+ * the block contains; INFINITY if none within the largest block.  With
+ * an index x of the cut cells (and scratch s) only those are extracted:
+ * the same triangles, in the block's own coordinates, so the same
+ * distance to the last bit. */
+static double surface_distance(const struct fmm *f, const struct cut_index *x,
+			       struct dist_scratch *s, const double p[3], double t, double radius)
 {
 	double hmax = fmax(f->h[0], fmax(f->h[1], f->h[2]));
 	radius = fmax(radius, 1e-3 * hmax);
@@ -138,19 +285,24 @@ static double surface_distance(const struct fmm *f, const double p[3], double t,
 		}
 		if (cells > MAX_BLOCK_CELLS)
 			return INFINITY;
-		size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
-		double *v = xreallocarray(NULL, nn, sizeof *v);
-		size_t m = 0;
-		for (int k = lo[2]; k <= hi[2]; k++)
-			for (int j = lo[1]; j <= hi[1]; j++) {
-				const double *row = f->t + ((size_t)k * (size_t)f->n[1] + (size_t)j) *
-							   (size_t)f->n[0];
-				for (int i = lo[0]; i <= hi[0]; i++)
-					v[m++] = row[i];
-			}
 		struct nearest nr = {p, INFINITY};
-		iso_surface(v, nb[0], nb[1], nb[2], b, t, 0, nearest_emit, &nr);
-		free(v);
+		if (x) {
+			block_from_index(f, x, s, lo, hi, nb, b, t, whole ? INFINITY : radius, &nr);
+		} else {
+			size_t nn = (size_t)nb[0] * (size_t)nb[1] * (size_t)nb[2];
+			double *v = xreallocarray(NULL, nn, sizeof *v);
+			size_t m = 0;
+			for (int k = lo[2]; k <= hi[2]; k++)
+				for (int j = lo[1]; j <= hi[1]; j++) {
+					const double *row =
+						f->t + ((size_t)k * (size_t)f->n[1] + (size_t)j) *
+							       (size_t)f->n[0];
+					for (int i = lo[0]; i <= hi[0]; i++)
+						v[m++] = row[i];
+				}
+			iso_surface(v, nb[0], nb[1], nb[2], b, t, 0, nearest_emit, &nr);
+			free(v);
+		}
 		double dist = sqrt(nr.best2);
 		if (dist <= radius || whole)
 			return dist;
@@ -158,7 +310,10 @@ static double surface_distance(const struct fmm *f, const double p[3], double t,
 	}
 }
 
-double fmm_distance(const struct fmm *f, const double p[3], double t)
+/* fmm_distance, its exact search through the index x (with scratch s)
+ * when x is not NULL */
+static double distance(const struct fmm *f, const struct cut_index *x, struct dist_scratch *s,
+		       const double p[3], double t)
 {
 	double q[3];
 	for (int d = 0; d < 3; d++)
@@ -226,11 +381,54 @@ double fmm_distance(const struct fmm *f, const double p[3], double t)
 	 * a kink and the gradient line can miss the nearest part of the
 	 * surface: search the triangles within the ball it gives */
 	double bound = fmin(dline, sub);
-	double dsurf = surface_distance(f, q, t, bound < INFINITY ? bound : est);
+	double dsurf = surface_distance(f, x, s, q, t, bound < INFINITY ? bound : est);
 	double d = fmin(fmin(dline, sub), dsurf);
 	return d < INFINITY ? d : est;
 }
 
+
+double fmm_distance(const struct fmm *f, const double p[3], double t)
+{
+	return distance(f, NULL, NULL, p, t);
+}
+
+struct many {
+	const struct fmm *f;
+	const struct cut_index *x;
+	struct dist_scratch *s;        /* one per worker */
+	const double *p;
+	double t, *d;
+};
+
+static void many_range(void *ctx, size_t lo, size_t hi, int worker)
+{
+	struct many *m = ctx;
+	for (size_t i = lo; i < hi; i++)
+		m->d[i] = distance(m->f, m->x, m->s + worker, m->p + 3 * i, m->t);
+}
+
+void fmm_distance_many(const struct fmm *f, const double *p, size_t n, double t, double *d)
+{
+	if (n == 0)
+		return;
+	if (f->n[0] < 2 || f->n[1] < 2 || f->n[2] < 2) {        /* no cells: no search */
+		for (size_t i = 0; i < n; i++)
+			d[i] = distance(f, NULL, NULL, p + 3 * i, t);
+		return;
+	}
+	struct cut_index x;
+	cut_index_build(f, t, &x);
+	int nw = par_threads();
+	struct dist_scratch *s = xreallocarray(NULL, (size_t)nw, sizeof *s);
+	memset(s, 0, (size_t)nw * sizeof *s);
+	struct many m = {f, &x, s, p, t, d};
+	par_for(n, 8, many_range, &m);
+	for (int w = 0; w < nw; w++)
+		free(s[w].v);
+	free(s);
+	free(x.start);
+	free(x.cell);
+}
 static int cmp_double(const void *a, const void *b)
 {
 	double x = *(const double *)a, y = *(const double *)b;
@@ -244,8 +442,7 @@ void fmm_distance_stats(const struct fmm *f, const double *p, size_t n, double t
 	if (n == 0)
 		return;
 	double *d = xreallocarray(NULL, n, sizeof *d);
-	for (size_t i = 0; i < n; i++)
-		d[i] = fmm_distance(f, p + 3 * i, t);
+	fmm_distance_many(f, p, n, t, d);
 	qsort(d, n, sizeof *d, cmp_double);
 	/* nearest rank: the smallest value with at least q*n values at or below it */
 	size_t im = (n + 1) / 2, i95 = (size_t)ceil(0.95 * (double)n);

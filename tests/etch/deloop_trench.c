@@ -88,17 +88,27 @@ static void run(const struct trench *c, const struct ratefile *r, const struct f
 	struct mesh *m = etch_run(&f, &o, &st);
 	long behind = 0, n = 0;
 	double worst = 0;
+	/* the live nodes above the substrate's band, their distances found
+	 * together (the surface's cut cells indexed once) */
+	double *p = xreallocarray(NULL, m->nnode + 1, 3 * sizeof *p);
+	size_t np = 0;
 	for (size_t i = 0; i < m->nnode; i++) {
 		const struct node *nd = &m->node[i];
-		if (!nd->alive || nd->p[2] < r->zmin + seg)
-			continue;
-		double d = fmm_distance(fm, nd->p, et);
-		if (fmm_time_at(fm, nd->p) < et)
+		if (nd->alive && nd->p[2] >= r->zmin + seg)
+			memcpy(p + 3 * np++, nd->p, 3 * sizeof *p);
+	}
+	double *dist = xreallocarray(NULL, np + 1, sizeof *dist);
+	fmm_distance_many(fm, p, np, et, dist);
+	for (size_t i = 0; i < np; i++) {
+		double d = dist[i];
+		if (fmm_time_at(fm, p + 3 * i) < et)
 			d = -d;
 		n++;
 		behind += d < -TOL;
 		worst = fmin(worst, d);
 	}
+	free(dist);
+	free(p);
 	long left = crossings_independent(m);
 	printf("  seg %g um, %zu triangles, %ld loops removed; %ld of %ld nodes more than %g um "
 	       "behind the refined front, the farthest %.3g um\n", seg, m->live_tri, st.loops,

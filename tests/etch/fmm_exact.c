@@ -654,7 +654,7 @@ static int cmp_abs(const void *a, const void *b)
  * published scheme: an independent reference) or fmm_solve, refined
  * rx x ry x rz: over the distinct vertices below z = -0.02 um (the
  * developed region), the distance to the reference surface T = t
- * (fmm_distance), positive where the vertex lies ahead of it (in resist
+ * (fmm_distance_many), positive where the vertex lies ahead of it (in resist
  * the reference has not reached), in x-y cells of the rate grid; prints
  * per file "mean M p95 P" (P: 95th percentile, nearest rank, of the
  * absolute value). */
@@ -684,19 +684,25 @@ static int bias(int argc, char **argv)
 				if (set->curves[c].p[3 * q + 2] < -0.02)
 					memcpy(p + 3 * np++, set->curves[c].p + 3 * q, 3 * sizeof *p);
 		qsort(p, np, 3 * sizeof *p, cmp_xyz);
+		size_t nu = 0;
+		for (size_t i = 0; i < np; i++)
+			if (nu == 0 || cmp_xyz(p + 3 * i, p + 3 * (nu - 1)) != 0)
+				memmove(p + 3 * nu++, p + 3 * i, 3 * sizeof *p);
+		np = nu;
 		double *d = xreallocarray(NULL, np + 1, sizeof *d);
+		double *dd = xreallocarray(NULL, np + 1, sizeof *dd);
+		fmm_distance_many(f, p, np, t, dd);
 		n = 0;
 		double sum = 0;
 		for (size_t i = 0; i < np; i++) {
-			if (i > 0 && cmp_xyz(p + 3 * i, p + 3 * (i - 1)) == 0)
-				continue;
-			double dist = fmm_distance(f, p + 3 * i, t);
+			double dist = dd[i];
 			if (dist >= FMM_UNREACHED)
 				continue;
 			double sg = fmm_time_at(f, p + 3 * i) > t ? dist : -dist;
 			d[n++] = sg / cell;
 			sum += sg / cell;
 		}
+		free(dd);
 		free(p);
 		qsort(d, n, sizeof *d, cmp_abs);
 		size_t i95 = (size_t)ceil(0.95 * (double)n);
