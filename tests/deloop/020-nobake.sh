@@ -18,11 +18,16 @@
 #     none either (was 18.7 um, then 8.3 um while the advancing mesh was
 #     delooped in place and kept the earlier deloops' seams open), and
 #     measure reads it without -force;
-#   - the hole is kept: its CDs at 10, 50 and 90 % height within 2 % of
-#     the fast-marching surface's (measured fmm 0 0.6796 1.2009 um, ray 0
-#     0.6787 1.2030: the hole is not open at 10 % at 60 s in either
-#     engine), and the surface reaches within 0.01 um of the fast-marching
-#     one's lowest point.
+#   - the hole is kept: its CDs at 10, 50 and 90 % height within 3 % of
+#     the fast-marching surface's (measured fmm 0 0.6626 1.1983 um, ray 0
+#     0.6787 1.2030: 2.4 and 0.4 %; the hole is not open at 10 % at 60 s
+#     in either engine), and the surface reaches within 0.01 um of the
+#     fast-marching one's lowest point.  At 50 % the section passes the
+#     hole's narrowing tip (tests/measure/008-gap-contact.sh): fast
+#     marching, which reconstructs the rate between nodes with its
+#     curvature, is 0.5 % from the cd the run converges to as nz grows;
+#     the ray-string, whose rate is linear between nodes, 3 % (fast
+#     marching with a linear rate gave 0.6796, 0.1 % from it).
 # The near searches (src/etch/deloop.c): after a deloop pass's first
 # search, the next passes search only near what the pass changed.  With
 # -check every such search is compared with a full search, bit for bit,
@@ -62,7 +67,7 @@ for run in ray ray20; do
 	echo "$run: hole CDs at 10 50 90 %: fmm $f, ray-string $r"
 	echo "$f $r" | awk '{ for (i = 1; i <= 3; i++) { a = $i; b = $(i + 3)
 		if (a == 0 && b == 0) continue; if (!(a > 0)) exit 1; d = (a - b) / a; if (d < 0) d = -d
-		if (d > 0.02) exit 1 } }' || fail "$run: the hole's CDs differ from fast marching by more than 2 %"
+		if (d > 0.03) exit 1 } }' || fail "$run: the hole's CDs differ from fast marching by more than 3 %"
 	zr=$(zlow $run.plot) zf=$(zlow fmm.plot)
 	echo "$run: lowest point $zr um (fast marching $zf)"
 	awk -v a="$zr" -v b="$zf" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 0.01) }' ||

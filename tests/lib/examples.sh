@@ -199,7 +199,7 @@ example_figures() {
 		readme_figure euv-contacts "25 holes' mean diameter" 25 "$1" 0
 		readme_figure euv-contacts "(seed 1: 22.7 nm" 22.7 "$2" 0.05
 		readme_figure euv-contacts "22.7 nm, 4.8 nm)" 4.8 "$3" 0.05
-		readme_figure euv-contacts "besides them (3)" 3 "$4" 0 ;;
+		readme_figure euv-contacts "besides them (2)" 2 "$4" 0 ;;
 	euv-lines)
 		# cd.txt: measure's line width at 10, 50, 90 %; ler.txt: measure -ler
 		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/d30/cd.txt")
@@ -227,7 +227,7 @@ example_figures() {
 		readme_figure arf-immersion-lines "and 0.06 in TM" 0.06 "$4" 0.005
 		# cd.txt: the resist line's width at 10, 50, 90 % (measure -line)
 		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/te/cd.txt")
-		readme_figure arf-immersion-lines "TE prints a line of about 45 nm" 45 "$_w" 0.5
+		readme_figure arf-immersion-lines "TE prints a line of about 46 nm" 46 "$_w" 0.5
 		# TM does not resolve: at mid-height the resist spans the whole
 		# 90 nm period and the film never clears to the substrate
 		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/tm/cd.txt")
