@@ -28,17 +28,11 @@ BASE=${FMM_BASE:-d3744ef}
 NEW=$BUILD/bin
 [ -x "$NEW/etch" ] || { echo "fmm-large: $NEW/etch not built"; exit 1; }
 [ -x /usr/bin/time ] || { echo "fmm-large: /usr/bin/time missing (Debian package time)"; exit 1; }
-if ! git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
-	echo "fmm-large: base revision $BASE not in this repository; no comparison"
-	exit 0
-fi
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/fmmlarge.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT INT TERM
-mkdir -p "$tmp/base"
-git -C "$TOP" archive "$BASE" | tar -x -C "$tmp/base" || { echo "fmm-large: git archive failed"; exit 1; }
-make -s -C "$tmp/base" -j2 BUILD=build all >"$tmp/base.log" 2>&1 ||
-	{ echo "fmm-large: building $BASE failed"; tail -n 5 "$tmp/base.log"; exit 1; }
-OLD=$tmp/base/build/bin
+. "$TOP/tests/lib/bench.sh"
+bench_base fmm-large "$BASE" "$tmp/base" || { [ $? = 2 ] && exit 0; exit 1; }
+OLD=$base_bin
 cd "$tmp" || exit 1
 echo "fmm-large: old = $BASE, new = this tree; load $(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null)"
 

@@ -24,17 +24,11 @@ BASE=${FMM_BASE:-5ab1070}
 NEW=$BUILD/bin
 [ -x "$NEW/etch" ] || { echo "fmm-speed: $NEW/etch not built"; exit 1; }
 [ -x /usr/bin/time ] || { echo "fmm-speed: /usr/bin/time missing (Debian package time)"; exit 1; }
-if ! git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
-	echo "fmm-speed: base revision $BASE not in this repository; no comparison"
-	exit 0
-fi
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/fmmspeed.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT INT TERM
-mkdir -p "$tmp/base"
-git -C "$TOP" archive "$BASE" | tar -x -C "$tmp/base" || { echo "fmm-speed: git archive failed"; exit 1; }
-make -s -C "$tmp/base" -j2 BUILD=build all >"$tmp/base.log" 2>&1 ||
-	{ echo "fmm-speed: building $BASE failed"; tail -n 5 "$tmp/base.log"; exit 1; }
-OLD=$tmp/base/build/bin
+. "$TOP/tests/lib/bench.sh"
+bench_base fmm-speed "$BASE" "$tmp/base" || { [ $? = 2 ] && exit 0; exit 1; }
+OLD=$base_bin
 cd "$tmp" || exit 1
 echo "fmm-speed: old = $BASE, new = this tree"
 
