@@ -36,40 +36,23 @@ OLD=$base_bin
 cd "$tmp" || exit 1
 echo "fmm-large: old = $BASE, new = this tree; load $(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null)"
 
-# run LABEL ETCH ARGS...: one etch run; its CPU, wall and peak RSS are
-# printed and kept in $LABEL.fig ("cpu wall peak-MB")
-run() {
-	label=$1
-	shift
-	/usr/bin/time -v -o t.txt "$@" >/dev/null 2>err.txt || { echo "  $label: failed"; tail -n 3 err.txt; return 1; }
-	awk -F': ' '
-		/User time/ { u = $2 } /System time/ { s = $2 } /Maximum resident/ { m = $2 }
-		/Elapsed \(wall/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = 60 * w + a[i] }
-		END { printf "%.2f %.2f %.1f\n", u + s, w, m / 1024 }' t.txt >"$label.fig"
-	read -r c w m <"$label.fig"
-	printf '  %-34s cpu %8.2f s  wall %8.2f s  peak %8.1f MB\n' "$label" "$c" "$w" "$m"
-}
-fig() { # LABEL FIELD (1 cpu, 2 wall, 3 peak MB)
-	[ -r "$1.fig" ] && awk -v f="$2" '{ print $f }' "$1.fig" || echo nan
-}
-
 size=${FMM_LARGE_SIZE:-20}
 echo "examples/array40 at $size um, etch -et 60 -last -method fmm:"
 sh "$TOP/examples/array40/make-mask.sh" "$size" >mask20.in
 "$NEW/splat" -q -o a20.cont mask20.in || exit 1
 "$NEW/bleach" -q -o a20.bin a20.cont "$TOP/examples/array40/resist.in" || exit 1
 rm -f a20.cont
-run old20 "$OLD/etch" -q -et 60 -last -method fmm -o old.plot a20.bin
-run new20 "$NEW/etch" -q -et 60 -last -method fmm -o new.plot a20.bin
+bench_run old20 "$OLD/etch" -q -et 60 -last -method fmm -o old.plot a20.bin
+bench_run new20 "$NEW/etch" -q -et 60 -last -method fmm -o new.plot a20.bin
 cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
 rm -f old.plot* new.plot* a20.bin
 
 echo "examples/defect, resist-shipley1470-80, -et 30 -pt 10:"
 "$NEW/splat" -q -o defect.cont "$TOP/examples/defect/mask.in" || exit 1
 "$NEW/bleach" -q -o defect.bin defect.cont "$TOP/examples/defect/resist-shipley1470-80.in" || exit 1
-run ray "$NEW/etch" -q -et 30 -pt 10 -o ray.plot defect.bin
-run oldd "$OLD/etch" -q -method fmm -et 30 -pt 10 -o old.plot defect.bin
-run newd "$NEW/etch" -q -method fmm -et 30 -pt 10 -o new.plot defect.bin
+bench_run ray "$NEW/etch" -q -et 30 -pt 10 -o ray.plot defect.bin
+bench_run oldd "$OLD/etch" -q -method fmm -et 30 -pt 10 -o old.plot defect.bin
+bench_run newd "$NEW/etch" -q -method fmm -et 30 -pt 10 -o new.plot defect.bin
 cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
 
 if [ "${FMM_LARGE_40:-0}" = 1 ]; then
@@ -77,22 +60,22 @@ if [ "${FMM_LARGE_40:-0}" = 1 ]; then
 	"$NEW/splat" -q -o a40.cont "$TOP/examples/array40/mask.in" || exit 1
 	"$NEW/bleach" -q -o a40.bin a40.cont "$TOP/examples/array40/resist.in" || exit 1
 	rm -f a40.cont
-	run new40 "$NEW/etch" -q -et 60 -last -method fmm -o new.plot a40.bin
+	bench_run new40 "$NEW/etch" -q -et 60 -last -method fmm -o new.plot a40.bin
 	rm -f new.plot* a40.bin
 fi
 
 echo "targets (old -> new):"
 printf '  "fmm 20 um peak under 2 GB" (%s um): etch %s -> %s GB\n' "$size" \
-	"$(fig old20 3 | awk '{ printf "%.2f", $1 / 1024 }')" "$(fig new20 3 | awk '{ printf "%.2f", $1 / 1024 }')"
+	"$(bench_fig old20 3 | awk '{ printf "%.2f", $1 / 1024 }')" "$(bench_fig new20 3 | awk '{ printf "%.2f", $1 / 1024 }')"
 printf '  "examples/defect with -method fmm under 3x the ray-string'"'"'s CPU": %s -> %s x (ray-string %s s CPU)\n' \
-	"$(echo "$(fig oldd 1) $(fig ray 1)" | awk '{ printf "%.0f", $1 / $2 }')" \
-	"$(echo "$(fig newd 1) $(fig ray 1)" | awk '{ printf "%.0f", $1 / $2 }')" "$(fig ray 1)"
+	"$(echo "$(bench_fig oldd 1) $(bench_fig ray 1)" | awk '{ printf "%.0f", $1 / $2 }')" \
+	"$(echo "$(bench_fig newd 1) $(bench_fig ray 1)" | awk '{ printf "%.0f", $1 / $2 }')" "$(bench_fig ray 1)"
 if [ -r new40.fig ]; then
 	printf '  "the 40 x 40 um array end to end under 90 s wall and 3 GB on two cores, pictures included": etch alone %s s wall, %s s CPU, %s GB\n' \
-		"$(fig new40 2)" "$(fig new40 1)" "$(fig new40 3 | awk '{ printf "%.2f", $1 / 1024 }')"
+		"$(bench_fig new40 2)" "$(bench_fig new40 1)" "$(bench_fig new40 3 | awk '{ printf "%.2f", $1 / 1024 }')"
 else
 	# the solve and the surfaces grow with the window's area: 4 times
 	printf '  "the 40 x 40 um array end to end under 90 s wall and 3 GB on two cores, pictures included": etch alone projected from 20 um (x 4): %s s CPU, %s GB (FMM_LARGE_40=1 measures it)\n' \
-		"$(fig new20 1 | awk '{ printf "%.0f", 4 * $1 }')" "$(fig new20 3 | awk '{ printf "%.1f", 4 * $1 / 1024 }')"
+		"$(bench_fig new20 1 | awk '{ printf "%.0f", 4 * $1 }')" "$(bench_fig new20 3 | awk '{ printf "%.1f", 4 * $1 / 1024 }')"
 fi
 exit 0

@@ -32,26 +32,15 @@ OLD=$base_bin
 cd "$tmp" || exit 1
 echo "fmm-speed: old = $BASE, new = this tree"
 
-# run LABEL ETCH ARGS...: one etch run, its CPU, wall and peak RSS
-run() {
-	label=$1
-	shift
-	/usr/bin/time -v -o t.txt "$@" >/dev/null 2>err.txt || { echo "  $label: failed"; tail -n 3 err.txt; return 1; }
-	awk -v l="$label" -F': ' '
-		/User time/ { u = $2 } /System time/ { s = $2 } /Maximum resident/ { m = $2 }
-		/Elapsed \(wall/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = 60 * w + a[i] }
-		END { printf "  %-34s cpu %7.2f s  wall %7.2f s  peak %7.1f MB\n", l, u + s, w, m / 1024 }' t.txt
-}
-
 "$NEW/splat" -q -o defect.cont "$TOP/examples/defect/mask.in" || exit 1
 "$NEW/bleach" -q -o defect.bin defect.cont "$TOP/examples/defect/resist-shipley1470-80.in" || exit 1
 echo "examples/defect, resist-shipley1470-80:"
-run "ray-string -et 30 -pt 10" "$NEW/etch" -q -et 30 -pt 10 -o ray.plot defect.bin
+bench_run "ray-string -et 30 -pt 10" "$NEW/etch" -q -et 30 -pt 10 -o ray.plot defect.bin
 for a in "-last" "-pt 10"; do
 	# shellcheck disable=SC2086
-	run "fmm old -et 30 $a" "$OLD/etch" -q -method fmm -et 30 $a -o old.plot defect.bin
+	bench_run "fmm old -et 30 $a" "$OLD/etch" -q -method fmm -et 30 $a -o old.plot defect.bin
 	# shellcheck disable=SC2086
-	run "fmm new -et 30 $a" "$NEW/etch" -q -method fmm -et 30 $a -o new.plot defect.bin
+	bench_run "fmm new -et 30 $a" "$NEW/etch" -q -method fmm -et 30 $a -o new.plot defect.bin
 	cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
 done
 
@@ -70,8 +59,8 @@ sed 's/^grid nz .*/grid nz 30/' "$TOP/examples/contact/resist.in" >window-r.in
 "$NEW/splat" -q window.in || exit 1
 "$NEW/bleach" -q -o window.bin window.cont window-r.in || exit 1
 echo "contact resist, 281 x 281 x 31 window (9 tiles), 2 threads:"
-run "ray-string -et 60 -pt 10" "$NEW/etch" -q -threads 2 -et 60 -pt 10 -o ray.plot window.bin
-run "fmm old -et 60 -pt 10" "$OLD/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o old.plot window.bin
-run "fmm new -et 60 -pt 10" "$NEW/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o new.plot window.bin
+bench_run "ray-string -et 60 -pt 10" "$NEW/etch" -q -threads 2 -et 60 -pt 10 -o ray.plot window.bin
+bench_run "fmm old -et 60 -pt 10" "$OLD/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o old.plot window.bin
+bench_run "fmm new -et 60 -pt 10" "$NEW/etch" -q -threads 2 -method fmm -et 60 -pt 10 -o new.plot window.bin
 cmp -s old.plot new.plot && echo "  (same curves.plot)" || echo "  (curves.plot differs)"
 exit 0

@@ -29,3 +29,24 @@ bench_base() {
 	fi
 	base_bin=$_bd/build/bin
 }
+
+# bench_run LABEL COMMAND...: runs COMMAND once under /usr/bin/time -v
+# (its output discarded) in the current directory, prints a line with its
+# CPU (user + sys) and wall seconds and peak RSS (MB), and keeps "cpu wall
+# peak-MB" in LABEL.fig; on failure prints the command's last lines and
+# returns 1.  bench_fig LABEL FIELD prints one of them (1 cpu, 2 wall,
+# 3 peak), or nan if the run left none.
+bench_run() {
+	_bl=$1
+	shift
+	/usr/bin/time -v -o t.txt "$@" >/dev/null 2>err.txt || { echo "  $_bl: failed"; tail -n 3 err.txt; return 1; }
+	awk -F': ' '
+		/User time/ { u = $2 } /System time/ { s = $2 } /Maximum resident/ { m = $2 }
+		/Elapsed \(wall/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = 60 * w + a[i] }
+		END { printf "%.2f %.2f %.1f\n", u + s, w, m / 1024 }' t.txt >"$_bl.fig"
+	read -r _bc _bw _bm <"$_bl.fig"
+	printf '  %-34s cpu %8.2f s  wall %8.2f s  peak %8.1f MB\n' "$_bl" "$_bc" "$_bw" "$_bm"
+}
+bench_fig() {
+	[ -r "$1.fig" ] && awk -v f="$2" '{ print $f }' "$1.fig" || echo nan
+}
