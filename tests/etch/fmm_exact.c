@@ -60,6 +60,7 @@
  * (tests/fmm/010-contact.sh).
  */
 #include "fmm.h"
+#include "fmmcheck.h"
 #include "fmt_plot.h"
 #include "util.h"
 
@@ -68,17 +69,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { \
-	if (!(cond)) { \
-		failures++; \
-		printf("FAIL %s:%d: ", __FILE__, __LINE__); \
-		printf(__VA_ARGS__); \
-		printf("\n"); \
-	} \
-} while (0)
 
 static struct ratefile *uniform(int nx, int ny, int nz, const double b[6], double rate)
 {
@@ -915,9 +905,5 @@ int main(int argc, char **argv)
 	test_two_seeds();
 	test_cut();
 	test_degenerate();
-	if (failures) {
-		printf("%d failures\n", failures);
-		return 1;
-	}
-	return 0;
+	return check_status();
 }

@@ -38,22 +38,12 @@
  *     nodes, within the range of the two (no overshoot), to 1e-12.
  */
 #include "fmm.h"
+#include "fmmcheck.h"
 #include "util.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-static int failures;
-
-#define CHECK(cond, ...) do { \
-	if (!(cond)) { \
-		failures++; \
-		printf("FAIL %s:%d: ", __FILE__, __LINE__); \
-		printf(__VA_ARGS__); \
-		printf("\n"); \
-	} \
-} while (0)
 
 /* Tolerances, in dz.  The reference's own error is about 1/16 of the
  * coarse grid's model error; what the reconstruction leaves is the
@@ -233,7 +223,5 @@ int main(void)
 	test_gauss();
 	test_zonly();
 	test_limited();
-	if (failures)
-		printf("%d failures\n", failures);
-	return failures != 0;
+	return check_status();
 }
