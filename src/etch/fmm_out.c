@@ -196,19 +196,11 @@ size_t fmm_decimate_tile(const struct fmm *f, struct tri_weld *w, double tol, co
 			 struct tri_mesh *out)
 {
 	double eps = fmm_weld_eps(f);
-	/* the welded tile as extracted, for a retry: welding its triangles
-	 * again in the same order gives the same vertices and numbering */
+	/* the welded tile as extracted, kept for a retry and the fallback */
 	struct tri_mesh dense = {0};
 	dense.nv = tri_weld_take(w, &dense.p, &dense.tv, &dense.nt);
 	for (int q = 0; q < NTOL_STEPS; q++) {
-		for (size_t i = 0; i < dense.nt; i++) {
-			double tri[9];
-			for (int c = 0; c < 3; c++)
-				memcpy(tri + 3 * c, dense.p + 3 * (size_t)dense.tv[3 * i + c],
-				       3 * sizeof *tri);
-			tri_weld_add(w, tri);
-		}
-		tri_decimate_welded(w, TOL_STEPS[q] * tol, f->bounds, eps, keep, NULL, out);
+		tri_decimate_mesh(&dense, TOL_STEPS[q] * tol, f->bounds, eps, keep, NULL, out);
 		if (!tile_crosses(f, out))
 			break;
 		tri_mesh_free(out);

@@ -861,6 +861,17 @@ size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], 
 	return decimate(p, nv, tv, n, tol, box, box_eps, keep, st, NULL, out);
 }
 
+size_t tri_decimate_mesh(const struct tri_mesh *in, double tol, const double box[6], double box_eps,
+			 const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out)
+{
+	/* decimate works on (and frees) its own vertices and triangles */
+	double *p = xreallocarray(NULL, 3 * in->nv + 1, sizeof *p);
+	int *tv = xreallocarray(NULL, 3 * in->nt + 1, sizeof *tv);
+	memcpy(p, in->p, 3 * in->nv * sizeof *p);
+	memcpy(tv, in->tv, 3 * in->nt * sizeof *tv);
+	return decimate(p, in->nv, tv, in->nt, tol, box, box_eps, keep, st, NULL, out);
+}
+
 void tri_mesh_free(struct tri_mesh *m)
 {
 	free(m->p);

@@ -72,5 +72,9 @@ void tri_mesh_free(struct tri_mesh *m);
 struct tri_weld;
 size_t tri_decimate_welded(struct tri_weld *w, double tol, const double box[6], double box_eps,
 			   const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out);
+/* The same on a copy of a welded mesh (in is left as it is), for a
+ * caller that may decimate it again with another bound. */
+size_t tri_decimate_mesh(const struct tri_mesh *in, double tol, const double box[6], double box_eps,
+			 const double keep[4], struct tri_decimate_stats *st, struct tri_mesh *out);
 
 #endif
