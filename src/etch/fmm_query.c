@@ -386,7 +386,6 @@ static double distance(const struct fmm *f, const struct cut_index *x, struct di
 	return d < INFINITY ? d : est;
 }
 
-
 double fmm_distance(const struct fmm *f, const double p[3], double t)
 {
 	return distance(f, NULL, NULL, p, t);
@@ -429,6 +428,7 @@ void fmm_distance_many(const struct fmm *f, const double *p, size_t n, double t,
 	free(x.start);
 	free(x.cell);
 }
+
 static int cmp_double(const void *a, const void *b)
 {
 	double x = *(const double *)a, y = *(const double *)b;
