@@ -37,25 +37,19 @@ mkrate=$BUILD/tests/lib/mkrate
 [ -x "$mkrate" ] || { echo "deloop: $mkrate not built"; exit 1; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/deloopbench.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT INT TERM
-# base_etch REV DIR WHAT: etch of revision REV built in $tmp/DIR (git
-# archive, make), its path in $base_bin, or a line saying why not (WHAT
-# names the comparison) and base_bin empty
+. "$TOP/tests/lib/bench.sh"
+# base_etch REV DIR: etch of revision REV built in $tmp/DIR (bench_base),
+# its path in $base_bin, or a line saying why not and base_bin empty
 base_etch() {
 	base_bin=
-	if [ -x /usr/bin/time ] && git -C "$TOP" rev-parse --verify -q "$1^{commit}" >/dev/null; then
-		mkdir -p "$tmp/$2"
-		if git -C "$TOP" archive "$1" | tar -x -C "$tmp/$2" &&
-			make -s -C "$tmp/$2" -j2 BUILD=build build/bin/etch >"$tmp/$2.log" 2>&1; then
-			base_bin=$tmp/$2/build/bin/etch
-		else
-			echo "deloop: building $1 failed; no comparison$3"
-		fi
-	else
-		echo "deloop: base revision $1 (or /usr/bin/time) missing; no comparison$3"
+	if [ ! -x /usr/bin/time ]; then
+		echo "deloop: /usr/bin/time missing; no comparison with $1"
+		return
 	fi
+	bench_base deloop "$1" "$tmp/$2" build/bin/etch && base_bin=$base_bin/etch
 }
 BASE=${DELOOP_BASE:-6931a7e}
-base_etch "$BASE" base ""
+base_etch "$BASE" base
 old=$base_bin
 [ -z "$old" ] || echo "deloop: old = $BASE, new = this tree, in the same run; ratio old / new of the deloop CPU time"
 cd "$tmp" || exit 1
@@ -106,7 +100,7 @@ done
 
 # the examples: CPU seconds of etch -deloop, this tree's and the base's
 XBASE=${DELOOP_EXAMPLES_BASE:-5ab1070}
-base_etch "$XBASE" xbase " on the examples"
+base_etch "$XBASE" xbase
 xold=$base_bin
 # xrun ETCH DIR RATE: etch as the examples' run.sh runs it, in DIR; the
 # CPU seconds appended to DIR/../cpu
