@@ -218,10 +218,14 @@ static void car_bake_plain(const struct peb_params *pp, double *M, int nx, int n
 	int c[4];
 	int ok = peb_choose_extrapolated(pp, M, nx, ny, nz, dx, dy, dz, n, nouter, c, &rich);
 	/* the x-y diffusion at every step instead of every fourth: its
-	 * splitting error is smaller, and on the order-2 line image of
-	 * tests/bench/car.sh, its x-y steps a quarter of its 16, a step costs
-	 * about as much (1.40 s for 16 steps, 4 in x-y; 1.53 s, 16 in x-y) */
-	if (!ok && nouter < n && 4 * nouter >= n)
+	 * splitting error is smaller, and where the reaction costs more than
+	 * an x-y step (orders other than 1: a logarithm or quadrature a point)
+	 * the two bakes cost about the plain one (the order-2 line image of
+	 * tests/bench/car.sh: 1.40 s for 16 steps, 4 in x-y; 1.37 s for 4 and
+	 * 8 with x-y at every step).  At order 1 they cost more: the 100 x
+	 * 100 x 200 contact window of tests/bench/car.sh, 2.90 s for 32 steps
+	 * with 8 in x-y, 4.69 s for 8 and 16 with x-y at every step. */
+	if (!ok && pp->p != 1 && nouter < n && 4 * nouter >= n)
 		ok = peb_choose_extrapolated(pp, M, nx, ny, nz, dx, dy, dz, n, n, c, &rich);
 	if (!ok) {
 		peb_run(pp, M, nx, ny, nz, dx, dy, dz, nouter, n / nouter, NULL);
