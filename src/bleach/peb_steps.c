@@ -330,8 +330,8 @@ int peb_choose_extrapolated(const struct peb_params *pp, const double *h0, int n
 	int c[4] = {n, nouter, 0, 0}, best = 0, ok = halve(&c[0], &c[1], xy);
 	c[2] = c[0];
 	c[3] = c[1];
-	samples_run(pp, &s, h0, nx, ny, nz, dx, dy, dz, n, nouter, m[0]);
 	if (ok && halve(&c[2], &c[3], xy)) {
+		samples_run(pp, &s, h0, nx, ny, nz, dx, dy, dz, n, nouter, m[0]);
 		samples_run(pp, &s, h0, nx, ny, nz, dx, dy, dz, c[0], c[1], m[1]);
 		samples_run(pp, &s, h0, nx, ny, nz, dx, dy, dz, c[2], c[3], m[2]);
 		double err = 0;
