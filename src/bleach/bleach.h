@@ -232,6 +232,19 @@ int peb_choose_steps(const struct peb_params *pp, const double *h0, size_t ncol,
 int peb_choose_outer(const struct peb_params *pp, const double *h0, int nx, int ny, int nz,
 		     double dx, double dy, double dz, int n, int kmin, double *change);
 #define PEB_OUTER_START 16
+/* The extrapolated bake of a deterministic run (Richardson, peb_steps.c):
+ * for the counts n and nouter that peb_choose_steps and peb_choose_outer
+ * chose, the smallest fine count nf such that m of the samples from nf / 2
+ * and nf steps extrapolated is within PEB_TOL of m from nf and 2 nf
+ * extrapolated, nf at most n / 2 (so that the two bakes, 1.5 nf steps,
+ * cost less than n); returns nf, 0 if none is.  counts: the fine bake's
+ * steps and x-y steps, then the coarse one's; the estimate in *change. */
+int peb_choose_extrapolated(const struct peb_params *pp, const double *h0, int nx, int ny,
+			    int nz, double dx, double dy, double dz, int n, int nouter, int counts[4],
+			    double *change);
+/* m from a bake in n steps (coarse) and one in 2n (fine), extrapolated,
+ * within [0, 1] */
+double peb_extrapolate(double coarse, double fine);
 
 /* ---- shotnoise.c: photon and acid shot noise (bleach.5 stochastic) ---- */
 

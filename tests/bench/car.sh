@@ -10,7 +10,8 @@
 # time is the figure); prints the step count bleach chose.
 # Then the bake's cliff cases and the examples with a CA resist, each with
 # this tree's bleach and with the base revision's (CAR_BASE, default
-# d3744ef: main before the order-1 products kept for the whole bake, the
+# c5814ae: main before the extrapolated deterministic bake; d3744ef,
+# before the order-1 products kept for the whole bake, the
 # closed-form derivative of the linear-noise reaction, the even circulant
 # x-y products and the z factors made once a step; 5ab1070, before the
 # column steps in place, the inline exponential of the order-1
@@ -61,7 +62,7 @@ else
 	exit 0
 fi
 
-BASE=${CAR_BASE:-d3744ef}
+BASE=${CAR_BASE:-c5814ae}
 old=
 if git -C "$TOP" rev-parse --verify -q "$BASE^{commit}" >/dev/null; then
 	mkdir -p base
