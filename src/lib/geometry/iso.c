@@ -11,7 +11,7 @@
  * the orientation test below stays exact: for a linear function on a
  * tetrahedron, the centroid of the points above the level lies above the
  * centroid of those below, and the triangle normal is parallel to the
- * gradient; walls of the pad (zero area once snapped) are dropped.
+ * gradient; walls of the pad (two corners on one face point) are dropped.
  */
 #include "iso.h"
 
@@ -96,15 +96,6 @@ static void lerp(const double *a, double fa, double wa, const double *b, double 
 		out[d] = a[d] + t * (b[d] - a[d]);
 }
 
-static double area2(const double *t)
-{
-	double u[3], v[3], c[3];
-	vec3_sub(t + 3, t, u);
-	vec3_sub(t + 6, t, v);
-	vec3_cross(u, v, c);
-	return sqrt(vec3_dot(c, c));
-}
-
 /* emits tri, flipped if needed so its normal points along up */
 static long out(double *tri, const double *up, iso_emit emit, void *ctx, double scale,
 		const double *b)
@@ -117,8 +108,16 @@ static long out(double *tri, const double *up, iso_emit emit, void *ctx, double 
 	vec3_sub(tri + 3, tri, u);
 	vec3_sub(tri + 6, tri, v);
 	vec3_cross(u, v, c);
-	/* relative threshold: triangles that the pad layer squeezes to a line */
-	if (area2(tri) <= 1e-12 * scale * scale)
+	/* Dropped: a triangle two of whose corners coincide, to a billionth of
+	 * a cell (the walls of the pad, whose crossings fall on the same face
+	 * point, and crossings at a grid point whose value is the level), as
+	 * welding would make it a line.  Not dropped for being small: where
+	 * the level passes a hair from a grid point the triangles around it
+	 * are legitimately tiny, and dropping them would leave a hole in the
+	 * surface. */
+	double w[3], e2 = 1e-9 * scale;
+	vec3_sub(tri + 6, tri + 3, w);
+	if (fmin(vec3_dot(u, u), fmin(vec3_dot(v, v), vec3_dot(w, w))) <= e2 * e2)
 		return 0;
 	if (vec3_dot(c, up) < 0)
 		for (int d = 0; d < 3; d++) {
