@@ -59,7 +59,12 @@ slurm_start() {
 	# kept 5 s after it ends, polled every 2 s (300 had the polls wait up
 	# to 32 s after a job of a few seconds); batch_sched_delay=0: a job
 	# submitted is scheduled at once, not up to 3 s later (with both, the
-	# Slurm half of calib/004 went from 71 to 52 s)
+	# Slurm half of calib/004 went from 71 to 52 s; slurm_fast_wait's
+	# sbatch polls every 0.1 s, well under MinJobAge).  CPUs=4 on this
+	# 2-core machine (config_overrides: slurmd takes the configured count):
+	# an array of 4 short tasks (calib/004's points, tile/004's tiles)
+	# starts as one wave rather than two, each wave waiting up to 1 s for
+	# slurmctld's scheduling pass
 	cat >slurm.conf <<C
 ClusterName=testcluster
 SlurmctldHost=$_host(127.0.0.1)
