@@ -9,9 +9,9 @@
 # runs while the cluster's jobs run.  sbatch --wait is Slurm's sbatch
 # with the waiting done by slurm_fast_wait (tests/lib/slurm.sh), which
 # polls squeue every 0.1 s where Slurm's sleeps 2 s a poll: those sleeps
-# were most of the test's wall time (21 s, 4 s with the 0.1 s polls); a
-# calib that did not pass --wait would still collect before the jobs end
-# and fail here.
+# were most of the test's wall time (on one busy machine 27 s with them,
+# 16 s without); a calib that did not pass --wait would still collect
+# before the jobs end and fail here.
 . "$TOP/tests/lib/common.sh"
 . "$TOP/tests/lib/slurm.sh"
 slurm_check
