@@ -2,7 +2,8 @@
 # it, and the fitted CDs carry an error estimate.  The 0.5 um contact at
 # NA 0.6 of tests/calib/002-recovery.sh (here on an 11 x 11 image grid,
 # nz 41), three points made by fem with Mack's Mth 0.5 (at 21 x 21 x 81
-# for the first fit, at the inputs' grid for the second), fitted from 0.49:
+# for the first fit, at the inputs' grid for the second), fitted from 0.498
+# (two iterations each):
 #  - calib -accuracy 30 chooses the grid with fem -accuracy 30 at the
 #    middle point (DIR/accuracy, its levels' tables there): 21 x 21 x 81,
 #    finer than the inputs' (the estimate at 11 x 11 x 41 is over 30 %;
@@ -39,7 +40,7 @@ bake diffusion 0.05
 develop mack 0.1 0.0001 0.5 5
 grid nz 41
 IN
-sed "s/mack 0.1 0.0001 0.5 5/mack 0.1 0.0001 0.49 5/" truth.in >start.in
+sed "s/mack 0.1 0.0001 0.5 5/mack 0.1 0.0001 0.498 5/" truth.in >start.in
 M="-rel 5 -hole 0 0"
 
 fem -q -n -if m.in -bf truth.in -et 60 -points 0:80 -measure "$M" -d fixed -grid "33 33 61" ||
