@@ -6,9 +6,12 @@
 # submitted with sbatch --wait, gives calib.dat and resist.fit.in byte for
 # byte as the same fit run locally with make -j 2.  Bounded by the
 # runner's timeout.  Without Slurm or root the test skips.  The local fit
-# runs while the cluster's jobs wait on sbatch's 2 s polls (most of the
-# cluster fit's wall time is those polls, one or two a batch, so the start
-# is close to the answer: each iteration costs two sbatch --wait).
+# runs while the cluster's jobs run.  sbatch --wait is Slurm's sbatch
+# with the waiting done by slurm_fast_wait (tests/lib/slurm.sh), which
+# polls squeue every 0.1 s where Slurm's sleeps 2 s a poll: those sleeps
+# were most of the test's wall time (on one busy machine 27 s with them,
+# 16 s without); a calib that did not pass --wait would still collect
+# before the jobs end and fail here.
 . "$TOP/tests/lib/common.sh"
 . "$TOP/tests/lib/slurm.sh"
 slurm_check
@@ -37,6 +40,7 @@ fem -q -if m.in -bf truth.in -et 60 -method fmm -focus -0.3,0.3 -dose 80,100 \
 	-measure "-rel 5 -hole 0 0" -d truth -j 2 2>truth.err &
 truth=$!
 slurm_start
+slurm_fast_wait
 wait $truth || fail "fem on the truth failed: $(cat truth.err)"
 cp truth/fem.dat meas.dat
 set -- -if m.in -bf start.in -et 60 -data meas.dat -measure "-rel 5 -hole 0 0" \

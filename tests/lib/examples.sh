@@ -53,16 +53,13 @@ example_readme() {
 	_readme=$TOP/examples/$1/README
 	[ -f "$_readme" ] || fail "no examples/$1/README"
 	if [ ! -d tree/examples ]; then
-		mkdir -p tree/examples
+		mkdir -p tree
 		ln -s "$BUILD" tree/build
-		# every example folder (they share examples/resists and inputs)
-		for _d in "$TOP"/examples/*/; do
-			_n=$(basename "$_d")
-			mkdir "tree/examples/$_n"
-			for _f in "$_d"*; do
-				[ "$(basename "$_f")" = out ] || cp -R "$_f" "tree/examples/$_n/"
-			done
-		done
+		# every example folder (they share examples/resists and inputs),
+		# in one tar rather than a cp a file (130 processes, seconds on a
+		# busy machine)
+		tar -C "$TOP" --exclude='examples/*/out' -cf - examples | tar -C tree -xf - ||
+			fail "cannot copy the examples into tree/"
 	fi
 	grep -o '`sh [^`]*`' "$_readme" | tr -d '`' >"$1.cmds"
 	[ -s "$1.cmds" ] || fail "examples/$1/README prints no command to run"

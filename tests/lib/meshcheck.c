@@ -256,23 +256,36 @@ static void grid_build(struct grid *g, const struct plot_set *s, double cap)
 /* the distance from p to the nearest triangle listed in its cell (cap if
  * none is nearer); the search stops at the first triangle within enough:
  * the caller wants the largest of these minima, and one at or under the
- * largest so far cannot change it (the same result as the full search) */
+ * largest so far cannot change it (the same result as the full search).
+ * *hint, the triangle found nearest to the previous point (the points
+ * come a triangle at a time, close together), is tried first: mostly it
+ * is within enough and ends the search at once.  Trying it changes no
+ * result: a triangle nearer to p than cap is listed in p's cell anyway,
+ * and one farther does not lower the minimum under cap. */
 static double nearest(const struct grid *g, const struct plot_set *s, const double *p, double cap,
-		      double enough)
+		      double enough, size_t *hint)
 {
 	size_t q = ((size_t)cell_of(g, 2, p[2]) * G + (size_t)cell_of(g, 1, p[1])) * G +
 		   (size_t)cell_of(g, 0, p[0]);
-	double best = cap;
-	for (size_t k = g->start[q]; k < g->start[q + 1] && best > enough; k++)
-		best = fmin(best, pt_tri(p, s->curves[g->item[k]].p));
+	double best = fmin(cap, pt_tri(p, s->curves[*hint].p));
+	for (size_t k = g->start[q]; k < g->start[q + 1] && best > enough; k++) {
+		double d = pt_tri(p, s->curves[g->item[k]].p);
+		if (d < best) {
+			best = d;
+			*hint = g->item[k];
+		}
+	}
 	return best;
 }
 
 static double one_side(const struct plot_set *a, const struct plot_set *b, double cap)
 {
+	if (b->ncurves == 0)   /* no triangle to be near: every point at cap */
+		return a->ncurves ? cap : 0;
 	struct grid g = {{0, 0, 0}, {0, 0, 0}, NULL, NULL};
 	grid_build(&g, b, cap);
 	double worst = 0;
+	size_t hint = 0;
 	for (int c = 0; c < a->ncurves; c++) {
 		const double *t = a->curves[c].p;
 		for (int i = 0; i <= 4; i++)
@@ -280,7 +293,7 @@ static double one_side(const struct plot_set *a, const struct plot_set *b, doubl
 				double u = i / 4.0, v = j / 4.0, w = 1 - u - v, p[3];
 				for (int d = 0; d < 3; d++)
 					p[d] = w * t[d] + u * t[3 + d] + v * t[6 + d];
-				worst = fmax(worst, nearest(&g, b, p, cap, worst));
+				worst = fmax(worst, nearest(&g, b, p, cap, worst, &hint));
 			}
 	}
 	free(g.start);
