@@ -395,6 +395,50 @@ static int chain_to(const struct mesh *m, const int *v, size_t nv, const int *po
 	return x;
 }
 
+/* The axis a face flag of the box fixes (0 x, 1 y, 2 z), or -1 unless
+ * f is one face alone. */
+static int face_axis(unsigned f)
+{
+	switch (f) {
+	case ON_X0: case ON_X1: return 0;
+	case ON_Y0: case ON_Y1: return 1;
+	case ON_SUB: case ON_TOP: return 2;
+	default: return -1;
+	}
+}
+
+/* An open stretch v[0 .. nv) from one face of the box to another that
+ * meets it at an edge (a side wall and the substrate: the wall's profile
+ * ends a little above the substrate, the floor a little short of the
+ * wall, and the stretch joins the two across the corner; Kodak 820 on
+ * examples/corner-defect at 88 mJ/cm2) is closed with a node on the
+ * edge: its two chords to the stretch's ends lie on the two faces.  The
+ * node is added, at the edge's point between the ends, and returned, if
+ * it is no farther from either end than CLOSE_SPAN of the stretch's
+ * longest segment; -1 otherwise. */
+static int corner_node(struct mesh *m, const int *v, size_t nv)
+{
+	const struct node *a = &m->node[v[0]], *b = &m->node[v[nv - 1]];
+	unsigned fa = a->flags & (ON_WALLS | ON_SUB), fb = b->flags & (ON_WALLS | ON_SUB);
+	int xa = face_axis(fa), xb = face_axis(fb);
+	if (nv < 2 || xa < 0 || xb < 0 || xa == xb)
+		return -1;
+	double p[3], len2 = 0;
+	for (int d = 0; d < 3; d++)
+		p[d] = 0.5 * (a->p[d] + b->p[d]);
+	p[xa] = a->p[xa];
+	p[xb] = b->p[xb];
+	for (size_t k = 0; k + 1 < nv; k++)
+		len2 = fmax(len2, dist2(m, v[k], v[k + 1]));
+	double da[3], db[3];
+	vec3_sub(p, a->p, da);
+	vec3_sub(p, b->p, db);
+	double lim = CLOSE_SPAN * CLOSE_SPAN * len2;
+	if (!(vec3_dot(da, da) <= lim && vec3_dot(db, db) <= lim))
+		return -1;
+	return mesh_add_node(m, p, a->s, fa | fb);
+}
+
 /* One closing: the open border walked segment by segment, each segment
  * once; a walk that comes back to a node on its path has gone round a
  * loop, which is cut off the path and closed (a border passing twice
@@ -454,10 +498,20 @@ static long close_all(struct mesh *m, int way, int **tris, int **loop, size_t *n
 			s = leaving(m, v[nv - 1], seen, ns);
 		}
 		unsigned face = m->node[v[0]].flags & m->node[v[nv - 1]].flags & (ON_WALLS | ON_SUB);
-		if (nv >= 3 && s < 0 && face && chord_free(m, v[nv - 1], v[0])) {
-			xgrow(&w, &capw, nv, sizeof *w);
+		int c = s < 0 && !face ? corner_node(m, v, nv) : -1;
+		if ((nv >= 3 && s < 0 && face && chord_free(m, v[nv - 1], v[0])) || c >= 0) {
+			xgrow(&w, &capw, nv + 1, sizeof *w);
 			memcpy(w, v, nv * sizeof *w);
-			loops += take_loop(m, w, (int)nv, way, loops, tris, loop, ntris, &cap, &capl);
+			if (c >= 0)
+				w[nv] = c;
+			int n = (int)nv + (c >= 0);
+			long l = take_loop(m, w, n, way, loops, tris, loop, ntris, &cap, &capl);
+			if (!l && c >= 0 && m->node[c].alive && m->node[c].nseg == 0) {
+				/* not closed, and nothing made: the corner node goes */
+				m->node[c].alive = 0;
+				m->live_node--;
+			}
+			loops += l;
 		}
 		for (size_t k = 0; k < nv; k++)
 			pos[v[k]] = 0;
