@@ -436,7 +436,9 @@ static int corner_node(struct mesh *m, const int *v, size_t nv)
 	double lim = CLOSE_SPAN * CLOSE_SPAN * len2;
 	if (!(vec3_dot(da, da) <= lim && vec3_dot(db, db) <= lim))
 		return -1;
-	return mesh_add_node(m, p, a->s, fa | fb);
+	double r[3];    /* copied: adding the node may move the array */
+	memcpy(r, a->s, sizeof r);
+	return mesh_add_node(m, p, r, fa | fb);
 }
 
 /* One closing: the open border walked segment by segment, each segment
