@@ -10,6 +10,19 @@
  * one array, and an index per node gives the heap position for
  * decrease-key.
  *
+ * A TRIAL node is updated once for every neighbour accepted before it,
+ * each time from all its KNOWN neighbours, and the slowness of a cell
+ * (cell_slowness: a logarithm and the limited curvature of four rates)
+ * depends on the rates alone: so each TRIAL node holds, in a slot of its
+ * own (struct cells, found through its heap entry), the cell slownesses
+ * it has computed towards each of its six neighbours, and those of the
+ * cells beyond them that the second-order form reads, which the
+ * neighbour, when accepted, hands over from its own slot.  Every value
+ * is computed by the same function from the same rates as without the
+ * slots, so T is the same to the last bit; the slots cost memory in
+ * proportion to the front, not the grid (on examples/contact without
+ * bake, three cell slownesses a node instead of eleven).
+ *
  * The update (Sethian & Vladimirsky's second-order upwind scheme):
  * along each axis take the KNOWN neighbour of smaller T, T1; if the next
  * node beyond it is KNOWN too with T2 <= T1, the one-sided difference
@@ -75,6 +88,16 @@ enum { ARITY = 4 };
 struct heap_ent {
 	double t;
 	int32_t n;
+	int32_t slot;           /* the node's struct cells (in the padding) */
+};
+
+/* What a TRIAL node has computed of the cells around it, by direction
+ * q = 2 d + (towards +d): near[q] the cell to its neighbour, far[q] the
+ * next cell beyond that neighbour (the second-order form's); NAN where
+ * not yet computed (cell_slowness never returns NAN). */
+struct cells {
+	double near[6];
+	double far[6];
 };
 
 struct solver {
@@ -90,7 +113,35 @@ struct solver {
 	int32_t *pos;           /* heap position of TRIAL nodes */
 	struct heap_ent *heap;
 	size_t nheap;
+	struct cells *cells;    /* one slot per TRIAL node */
+	int32_t *free_slots;    /* slots not in use, a stack */
+	size_t nslots, nfree;   /* slots allocated, of which free */
 };
+
+/* A slot of NANs for a node becoming TRIAL. */
+static int32_t slot_new(struct solver *s)
+{
+	int32_t q;
+	if (s->nfree > 0) {
+		q = s->free_slots[--s->nfree];
+	} else {
+		if ((s->nslots & (s->nslots - 1)) == 0) {
+			size_t cap = s->nslots ? 2 * s->nslots : 64;
+			s->cells = xreallocarray(s->cells, cap, sizeof *s->cells);
+			s->free_slots = xreallocarray(s->free_slots, cap, sizeof *s->free_slots);
+		}
+		q = (int32_t)s->nslots++;
+	}
+	for (int k = 0; k < 6; k++)
+		s->cells[q].near[k] = s->cells[q].far[k] = NAN;
+	return q;
+}
+
+static void slot_free(struct solver *s, int32_t q)
+{
+	if (q >= 0)
+		s->free_slots[s->nfree++] = q;
+}
 
 static void sift_up(struct solver *s, size_t i)
 {
@@ -133,14 +184,16 @@ static void remove_root(struct solver *s)
 	s->nheap = n - 1;
 }
 
-/* Makes node n TRIAL with time t, or lowers its time to t. */
-static void offer(struct solver *s, size_t n, double t)
+/* Makes node n TRIAL with time t and the slot q (slot_new), or lowers
+ * its time to t. */
+static void offer(struct solver *s, size_t n, double t, int32_t q)
 {
 	if (s->state[n] == FAR) {
 		s->state[n] = TRIAL;
 		s->t[n] = t;
 		s->heap[s->nheap].t = t;
 		s->heap[s->nheap].n = (int32_t)n;
+		s->heap[s->nheap].slot = q;
 		s->nheap++;
 		sift_up(s, s->nheap - 1);
 	} else if (s->state[n] == TRIAL && t < s->t[n]) {
@@ -151,9 +204,16 @@ static void offer(struct solver *s, size_t n, double t)
 	}
 }
 
-static size_t pop(struct solver *s)
+/* The slot of node n: its own if TRIAL, else a new one. */
+static int32_t slot_of(struct solver *s, size_t n)
+{
+	return s->state[n] == TRIAL ? s->heap[s->pos[n]].slot : slot_new(s);
+}
+
+static size_t pop(struct solver *s, int32_t *slot)
 {
 	size_t n = (size_t)s->heap[0].n;
+	*slot = s->heap[0].slot;
 	remove_root(s);
 	return n;
 }
@@ -271,8 +331,18 @@ static double cell_slowness(const struct solver *s, size_t a, ptrdiff_t o, int c
 	return rlo > 0 ? fmin(fmax(f, 1 / rhi), 1 / rlo) : fmax(f, 1 / rhi);
 }
 
-/* The upwind update of node n at grid position c (see the note above). */
-static double update(const struct solver *s, size_t n, const int c[3])
+/* cell_slowness of the cell from a towards a + o, kept in *memo. */
+static double cell_slowness_memo(const struct solver *s, double *memo, size_t a, ptrdiff_t o,
+				 int ca, int dir, int hi)
+{
+	if (isnan(*memo))
+		*memo = cell_slowness(s, a, o, ca, dir, hi);
+	return *memo;
+}
+
+/* The upwind update of node n at grid position c (see the note above),
+ * its cell slownesses kept in cl. */
+static double update(const struct solver *s, size_t n, const int c[3], struct cells *cl)
 {
 	double a[3], b[3];
 	int m = 0;
@@ -297,11 +367,12 @@ static double update(const struct solver *s, size_t n, const int c[3])
 		/* the slowness the difference stands for: the mean over the
 		 * cell (first order), or the second-order combination of the
 		 * two cells' means, in place of the node's own */
-		int dir = o > 0 ? 1 : -1;
-		double f1 = cell_slowness(s, n, o, c[d], dir, hi), f = f1;
+		int dir = o > 0 ? 1 : -1, k = 2 * d + (o > 0);
+		double f1 = cell_slowness_memo(s, &cl->near[k], n, o, c[d], dir, hi), f = f1;
 		double aa, bb;
 		if (t2 <= t1 &&
-		    (f = 0.5 * (3 * f1 - cell_slowness(s, n + o, o, c[d] + dir, dir, hi))) > 0) {
+		    (f = 0.5 * (3 * f1 - cell_slowness_memo(s, &cl->far[k], n + o, o, c[d] + dir,
+							     dir, hi))) > 0) {
 			aa = s->a2[d];
 			bb = (4 * t1 - t2) / 3;
 		} else {
@@ -336,8 +407,10 @@ static double update(const struct solver *s, size_t n, const int c[3])
 	return t;
 }
 
-/* Updates the non-KNOWN, reachable neighbours of the node just accepted. */
-static void relax(struct solver *s, size_t n, const int c[3])
+/* Updates the non-KNOWN, reachable neighbours of the node just accepted,
+ * handing each the slowness of the cell beyond n from n's slot ns (-1:
+ * none, a source node). */
+static void relax(struct solver *s, size_t n, const int c[3], int32_t ns)
 {
 	for (int d = 0; d < 3; d++)
 		for (int dir = -1; dir <= 1; dir += 2) {
@@ -349,7 +422,14 @@ static void relax(struct solver *s, size_t n, const int c[3])
 				continue;
 			int cm[3] = {c[0], c[1], c[2]};
 			cm[d] = cd;
-			offer(s, m, update(s, m, cm));
+			int32_t q = slot_of(s, m);
+			struct cells *cl = &s->cells[q];
+			/* from m, n lies towards -dir: the cell beyond n in
+			 * that direction is n's own cell towards -dir */
+			int k = 2 * d + (dir < 0);
+			if (ns >= 0 && isnan(cl->far[k]))
+				cl->far[k] = s->cells[ns].near[k];
+			offer(s, m, update(s, m, cm, cl), q);
 		}
 }
 
@@ -501,6 +581,9 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
 	s->pos = xreallocarray(NULL, total, sizeof *s->pos);
 	s->heap = xreallocarray(NULL, total, sizeof *s->heap);
 	s->nheap = 0;
+	s->cells = NULL;
+	s->free_slots = NULL;
+	s->nslots = s->nfree = 0;
 	int ref[3] = {refine ? refine[0] : 1, refine ? refine[1] : 1, refine ? refine[2] : 1};
 	for (size_t n = 0; n < total; n++)
 		f->t[n] = FMM_UNREACHED;
@@ -531,12 +614,14 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
  * only as far as a query needs (fmm_time_at_settled). */
 static void accept_next(struct fmm *f, struct solver *s)
 {
-	size_t n = pop(s);
+	int32_t q;
+	size_t n = pop(s, &q);
 	s->state[n] = KNOWN;
 	f->accepted++;
 	int c[3];
 	coords(s, n, c);
-	relax(s, n, c);
+	relax(s, n, c, q);
+	slot_free(s, q);
 }
 
 /* The rates stay with the solution, for the surface (fmm_out.c); the
@@ -550,6 +635,8 @@ static void finish(struct fmm *f, struct solver *s)
 	free(s->state);
 	free(s->pos);
 	free(s->heap);
+	free(s->cells);
+	free(s->free_slots);
 }
 
 static void march(struct fmm *f, struct solver *s)
@@ -573,7 +660,7 @@ static void start_top(struct fmm *f, struct solver *s)
 	for (size_t q = 0; q < plane; q++) {
 		int c[3];
 		coords(s, top + q, c);
-		relax(s, top + q, c);
+		relax(s, top + q, c, -1);
 	}
 }
 
@@ -633,7 +720,7 @@ static void start_points(const struct ratefile *r, struct fmm *f, struct solver 
 					 * uniform rate, second order for a smooth one */
 					double t = sqrt(dist) * 0.5 * (sp + s->slow[n]);
 					if (s->slow[n] < INFINITY && t < INFINITY)
-						offer(s, n, t);
+						offer(s, n, t, slot_of(s, n));
 				}
 	}
 }
@@ -734,6 +821,8 @@ void fmm_free(struct fmm *f)
 		free(f->march->s.state);
 		free(f->march->s.pos);
 		free(f->march->s.heap);
+		free(f->march->s.cells);
+		free(f->march->s.free_slots);
 		free(f->march);
 	}
 	free(f->t);
