@@ -91,13 +91,17 @@ struct heap_ent {
 	int32_t slot;           /* the node's struct cells (in the padding) */
 };
 
-/* What a TRIAL node has computed of the cells around it, by direction
- * q = 2 d + (towards +d): near[q] the cell to its neighbour, far[q] the
- * next cell beyond that neighbour (the second-order form's); NAN where
- * not yet computed (cell_slowness never returns NAN). */
+/* What a TRIAL node has computed of the cells around it, per axis d:
+ * near[d] the cell to its upwind neighbour, far[d] the next cell beyond
+ * that neighbour (the second-order form's), for the direction the bits
+ * of up say (bit d for near, 3 + d for far: towards +d), where the bits
+ * of has say a value is there.  One direction per axis, as the upwind
+ * neighbour of an axis seldom changes side: the slot is 56 bytes. */
 struct cells {
-	double near[6];
-	double far[6];
+	double near[3];
+	double far[3];
+	int32_t pos;            /* the node's place in the heap */
+	unsigned char has, up;
 };
 
 struct solver {
@@ -110,15 +114,17 @@ struct solver {
 	unsigned char *state;
 	int nodal;              /* fmm_solve_nodal: the node's own slowness */
 	int linear;             /* the rate linear between nodes (fmm_solve_linear) */
-	int32_t *pos;           /* heap position of TRIAL nodes */
-	struct heap_ent *heap;
+	int32_t *slot;          /* the slot of TRIAL nodes */
+	struct heap_ent *heap;  /* in heap_mem, placed so that the four
+				 * children of an entry share a cache line */
+	struct heap_ent *heap_mem;
 	size_t nheap;
 	struct cells *cells;    /* one slot per TRIAL node */
 	int32_t *free_slots;    /* slots not in use, a stack */
 	size_t nslots, nfree;   /* slots allocated, of which free */
 };
 
-/* A slot of NANs for a node becoming TRIAL. */
+/* An empty slot for a node becoming TRIAL. */
 static int32_t slot_new(struct solver *s)
 {
 	int32_t q;
@@ -132,8 +138,7 @@ static int32_t slot_new(struct solver *s)
 		}
 		q = (int32_t)s->nslots++;
 	}
-	for (int k = 0; k < 6; k++)
-		s->cells[q].near[k] = s->cells[q].far[k] = NAN;
+	s->cells[q].has = 0;
 	return q;
 }
 
@@ -151,11 +156,11 @@ static void sift_up(struct solver *s, size_t i)
 		if (s->heap[p].t <= e.t)
 			break;
 		s->heap[i] = s->heap[p];
-		s->pos[s->heap[i].n] = (int32_t)i;
+		s->cells[s->heap[i].slot].pos = (int32_t)i;
 		i = p;
 	}
 	s->heap[i] = e;
-	s->pos[e.n] = (int32_t)i;
+	s->cells[e.slot].pos = (int32_t)i;
 }
 
 /* Removing the root: the hole walks down to a leaf along the smaller
@@ -174,7 +179,7 @@ static void remove_root(struct solver *s)
 			if (s->heap[q].t < s->heap[best].t)
 				best = q;
 		s->heap[i] = s->heap[best];
-		s->pos[s->heap[i].n] = (int32_t)i;
+		s->cells[s->heap[i].slot].pos = (int32_t)i;
 		i = best;
 	}
 	if (i != n - 1) {
@@ -194,11 +199,12 @@ static void offer(struct solver *s, size_t n, double t, int32_t q)
 		s->heap[s->nheap].t = t;
 		s->heap[s->nheap].n = (int32_t)n;
 		s->heap[s->nheap].slot = q;
+		s->slot[n] = q;
 		s->nheap++;
 		sift_up(s, s->nheap - 1);
 	} else if (s->state[n] == TRIAL && t < s->t[n]) {
 		s->t[n] = t;
-		size_t i = (size_t)s->pos[n];
+		size_t i = (size_t)s->cells[s->slot[n]].pos;
 		s->heap[i].t = t;
 		sift_up(s, i);
 	}
@@ -207,7 +213,7 @@ static void offer(struct solver *s, size_t n, double t, int32_t q)
 /* The slot of node n: its own if TRIAL, else a new one. */
 static int32_t slot_of(struct solver *s, size_t n)
 {
-	return s->state[n] == TRIAL ? s->heap[s->pos[n]].slot : slot_new(s);
+	return s->state[n] == TRIAL ? s->slot[n] : slot_new(s);
 }
 
 static size_t pop(struct solver *s, int32_t *slot)
@@ -331,13 +337,18 @@ static double cell_slowness(const struct solver *s, size_t a, ptrdiff_t o, int c
 	return rlo > 0 ? fmin(fmax(f, 1 / rhi), 1 / rlo) : fmax(f, 1 / rhi);
 }
 
-/* cell_slowness of the cell from a towards a + o, kept in *memo. */
-static double cell_slowness_memo(const struct solver *s, double *memo, size_t a, ptrdiff_t o,
-				 int ca, int dir, int hi)
+/* cell_slowness of the cell from a towards a + o, kept in *v with the
+ * bit b of cl's has and up (up: o > 0). */
+static double cell_slowness_memo(const struct solver *s, struct cells *cl, double *v, int b,
+				 size_t a, ptrdiff_t o, int ca, int dir, int hi)
 {
-	if (isnan(*memo))
-		*memo = cell_slowness(s, a, o, ca, dir, hi);
-	return *memo;
+	unsigned char bit = (unsigned char)(1u << b), up = o > 0 ? bit : 0;
+	if (!(cl->has & bit) || (cl->up & bit) != up) {
+		*v = cell_slowness(s, a, o, ca, dir, hi);
+		cl->has |= bit;
+		cl->up = (unsigned char)((cl->up & ~bit) | up);
+	}
+	return *v;
 }
 
 /* The upwind update of node n at grid position c (see the note above),
@@ -367,12 +378,12 @@ static double update(const struct solver *s, size_t n, const int c[3], struct ce
 		/* the slowness the difference stands for: the mean over the
 		 * cell (first order), or the second-order combination of the
 		 * two cells' means, in place of the node's own */
-		int dir = o > 0 ? 1 : -1, k = 2 * d + (o > 0);
-		double f1 = cell_slowness_memo(s, &cl->near[k], n, o, c[d], dir, hi), f = f1;
+		int dir = o > 0 ? 1 : -1;
+		double f1 = cell_slowness_memo(s, cl, &cl->near[d], d, n, o, c[d], dir, hi), f = f1;
 		double aa, bb;
 		if (t2 <= t1 &&
-		    (f = 0.5 * (3 * f1 - cell_slowness_memo(s, &cl->far[k], n + o, o, c[d] + dir,
-							     dir, hi))) > 0) {
+		    (f = 0.5 * (3 * f1 - cell_slowness_memo(s, cl, &cl->far[d], 3 + d, n + o, o,
+							     c[d] + dir, dir, hi))) > 0) {
 			aa = s->a2[d];
 			bb = (4 * t1 - t2) / 3;
 		} else {
@@ -425,10 +436,18 @@ static void relax(struct solver *s, size_t n, const int c[3], int32_t ns)
 			int32_t q = slot_of(s, m);
 			struct cells *cl = &s->cells[q];
 			/* from m, n lies towards -dir: the cell beyond n in
-			 * that direction is n's own cell towards -dir */
-			int k = 2 * d + (dir < 0);
-			if (ns >= 0 && isnan(cl->far[k]))
-				cl->far[k] = s->cells[ns].near[k];
+			 * that direction is n's own cell towards -dir, if n
+			 * has it */
+			if (ns >= 0) {
+				const struct cells *cn = &s->cells[ns];
+				unsigned char bn = (unsigned char)(1u << d), up = dir < 0 ? bn : 0;
+				unsigned char bf = (unsigned char)(bn << 3);
+				if ((cn->has & bn) && (cn->up & bn) == up) {
+					cl->far[d] = cn->near[d];
+					cl->has |= bf;
+					cl->up = (unsigned char)((cl->up & ~bf) | (up << 3));
+				}
+			}
 			offer(s, m, update(s, m, cm, cl), q);
 		}
 }
@@ -578,8 +597,11 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
 	s->t = f->t;
 	s->slow = xreallocarray(NULL, total, sizeof *s->slow);
 	s->state = xcalloc(total, 1);
-	s->pos = xreallocarray(NULL, total, sizeof *s->pos);
-	s->heap = xreallocarray(NULL, total, sizeof *s->heap);
+	s->slot = xreallocarray(NULL, total, sizeof *s->slot);
+	/* 64-byte lines: entries 4i + 1 .. 4i + 4, the children of i, fill
+	 * one line when entry 1 starts a line (malloc aligns to 16) */
+	s->heap_mem = xreallocarray(NULL, total + 3, sizeof *s->heap);
+	s->heap = s->heap_mem + (4 - ((uintptr_t)s->heap_mem / sizeof *s->heap + 1) % 4) % 4;
 	s->nheap = 0;
 	s->cells = NULL;
 	s->free_slots = NULL;
@@ -633,8 +655,8 @@ static void finish(struct fmm *f, struct solver *s)
 		s->slow[n] = s->slow[n] < INFINITY ? 1 / s->slow[n] : 0;
 	f->rate = s->slow;
 	free(s->state);
-	free(s->pos);
-	free(s->heap);
+	free(s->slot);
+	free(s->heap_mem);
 	free(s->cells);
 	free(s->free_slots);
 }
@@ -819,8 +841,8 @@ void fmm_free(struct fmm *f)
 	if (f->march) {
 		free(f->march->s.slow);
 		free(f->march->s.state);
-		free(f->march->s.pos);
-		free(f->march->s.heap);
+		free(f->march->s.slot);
+		free(f->march->s.heap_mem);
 		free(f->march->s.cells);
 		free(f->march->s.free_slots);
 		free(f->march);
