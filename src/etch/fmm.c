@@ -119,10 +119,19 @@ struct solver {
 				 * children of an entry share a cache line */
 	struct heap_ent *heap_mem;
 	size_t nheap;
-	struct cells *cells;    /* one slot per TRIAL node */
+	struct cells **blocks;  /* the slots, SLOT_BLOCK a block: one per
+				 * TRIAL node, in memory that grows with the
+				 * front without a copy */
 	int32_t *free_slots;    /* slots not in use, a stack */
-	size_t nslots, nfree;   /* slots allocated, of which free */
+	size_t nslots, nfree;   /* slots made, of which free */
 };
+
+enum { SLOT_BLOCK = 1 << 14 };
+
+static struct cells *cells_of(const struct solver *s, int32_t q)
+{
+	return &s->blocks[q / SLOT_BLOCK][q % SLOT_BLOCK];
+}
 
 /* An empty slot for a node becoming TRIAL. */
 static int32_t slot_new(struct solver *s)
@@ -131,15 +140,25 @@ static int32_t slot_new(struct solver *s)
 	if (s->nfree > 0) {
 		q = s->free_slots[--s->nfree];
 	} else {
-		if ((s->nslots & (s->nslots - 1)) == 0) {
-			size_t cap = s->nslots ? 2 * s->nslots : 64;
-			s->cells = xreallocarray(s->cells, cap, sizeof *s->cells);
-			s->free_slots = xreallocarray(s->free_slots, cap, sizeof *s->free_slots);
+		if (s->nslots % SLOT_BLOCK == 0) {
+			size_t nb = s->nslots / SLOT_BLOCK + 1;
+			s->blocks = xreallocarray(s->blocks, nb, sizeof *s->blocks);
+			s->blocks[nb - 1] = xreallocarray(NULL, SLOT_BLOCK, sizeof **s->blocks);
+			s->free_slots = xreallocarray(s->free_slots, nb * SLOT_BLOCK,
+						      sizeof *s->free_slots);
 		}
 		q = (int32_t)s->nslots++;
 	}
-	s->cells[q].has = 0;
+	cells_of(s, q)->has = 0;
 	return q;
+}
+
+static void slots_free(struct solver *s)
+{
+	for (size_t b = 0; b * SLOT_BLOCK < s->nslots; b++)
+		free(s->blocks[b]);
+	free(s->blocks);
+	free(s->free_slots);
 }
 
 static void slot_free(struct solver *s, int32_t q)
@@ -156,11 +175,11 @@ static void sift_up(struct solver *s, size_t i)
 		if (s->heap[p].t <= e.t)
 			break;
 		s->heap[i] = s->heap[p];
-		s->cells[s->heap[i].slot].pos = (int32_t)i;
+		cells_of(s, s->heap[i].slot)->pos = (int32_t)i;
 		i = p;
 	}
 	s->heap[i] = e;
-	s->cells[e.slot].pos = (int32_t)i;
+	cells_of(s, e.slot)->pos = (int32_t)i;
 }
 
 /* Removing the root: the hole walks down to a leaf along the smaller
@@ -179,7 +198,7 @@ static void remove_root(struct solver *s)
 			if (s->heap[q].t < s->heap[best].t)
 				best = q;
 		s->heap[i] = s->heap[best];
-		s->cells[s->heap[i].slot].pos = (int32_t)i;
+		cells_of(s, s->heap[i].slot)->pos = (int32_t)i;
 		i = best;
 	}
 	if (i != n - 1) {
@@ -204,7 +223,7 @@ static void offer(struct solver *s, size_t n, double t, int32_t q)
 		sift_up(s, s->nheap - 1);
 	} else if (s->state[n] == TRIAL && t < s->t[n]) {
 		s->t[n] = t;
-		size_t i = (size_t)s->cells[s->slot[n]].pos;
+		size_t i = (size_t)cells_of(s, s->slot[n])->pos;
 		s->heap[i].t = t;
 		sift_up(s, i);
 	}
@@ -434,12 +453,12 @@ static void relax(struct solver *s, size_t n, const int c[3], int32_t ns)
 			int cm[3] = {c[0], c[1], c[2]};
 			cm[d] = cd;
 			int32_t q = slot_of(s, m);
-			struct cells *cl = &s->cells[q];
+			struct cells *cl = cells_of(s, q);
 			/* from m, n lies towards -dir: the cell beyond n in
 			 * that direction is n's own cell towards -dir, if n
 			 * has it */
 			if (ns >= 0) {
-				const struct cells *cn = &s->cells[ns];
+				const struct cells *cn = cells_of(s, ns);
 				unsigned char bn = (unsigned char)(1u << d), up = dir < 0 ? bn : 0;
 				unsigned char bf = (unsigned char)(bn << 3);
 				if ((cn->has & bn) && (cn->up & bn) == up) {
@@ -603,7 +622,7 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
 	s->heap_mem = xreallocarray(NULL, total + 3, sizeof *s->heap);
 	s->heap = s->heap_mem + (4 - ((uintptr_t)s->heap_mem / sizeof *s->heap + 1) % 4) % 4;
 	s->nheap = 0;
-	s->cells = NULL;
+	s->blocks = NULL;
 	s->free_slots = NULL;
 	s->nslots = s->nfree = 0;
 	int ref[3] = {refine ? refine[0] : 1, refine ? refine[1] : 1, refine ? refine[2] : 1};
@@ -657,8 +676,7 @@ static void finish(struct fmm *f, struct solver *s)
 	free(s->state);
 	free(s->slot);
 	free(s->heap_mem);
-	free(s->cells);
-	free(s->free_slots);
+	slots_free(s);
 }
 
 static void march(struct fmm *f, struct solver *s)
@@ -843,8 +861,7 @@ void fmm_free(struct fmm *f)
 		free(f->march->s.state);
 		free(f->march->s.slot);
 		free(f->march->s.heap_mem);
-		free(f->march->s.cells);
-		free(f->march->s.free_slots);
+		slots_free(&f->march->s);
 		free(f->march);
 	}
 	free(f->t);
