@@ -6,22 +6,24 @@
  * the TRIAL node of least T is accepted next and its neighbours are
  * updated from their KNOWN neighbours only, so T is computed in
  * increasing order and every node once: O(N log N) with a binary heap.
- * The heap (4-ary) holds (T, node) pairs by value, so sifting touches
- * one array, and an index per node gives the heap position for
+ * The heap (4-ary) holds (T, node, slot) entries by value, so sifting
+ * touches one array, and the node's slot holds its heap position for
  * decrease-key.
  *
  * A TRIAL node is updated once for every neighbour accepted before it,
  * each time from all its KNOWN neighbours, and the slowness of a cell
  * (cell_slowness: a logarithm and the limited curvature of four rates)
  * depends on the rates alone: so each TRIAL node holds, in a slot of its
- * own (struct cells, found through its heap entry), the cell slownesses
- * it has computed towards each of its six neighbours, and those of the
- * cells beyond them that the second-order form reads, which the
- * neighbour, when accepted, hands over from its own slot.  Every value
- * is computed by the same function from the same rates as without the
- * slots, so T is the same to the last bit; the slots cost memory in
- * proportion to the front, not the grid (on examples/contact without
- * bake, three cell slownesses a node instead of eleven).
+ * own (struct cells, numbered per node), the cell slownesses it has
+ * computed towards its upwind neighbours, and those of the cells beyond
+ * them that the second-order form reads, which the neighbour, when
+ * accepted, hands over from its own slot.  Every value is computed by
+ * the same function from the same rates as without the slots, so T is
+ * the same to the last bit; the slots cost memory in proportion to the
+ * front (the TRIAL nodes: the whole developed surface of the moment,
+ * some 20-30 nodes an x-y column on the examples), not the grid (on
+ * examples/contact without bake, three cell slownesses a node computed
+ * instead of eleven).
  *
  * The update (Sethian & Vladimirsky's second-order upwind scheme):
  * along each axis take the KNOWN neighbour of smaller T, T1; if the next

@@ -112,9 +112,10 @@ int main(int argc, char **argv)
 X
 solve_driver() { # TREE BUILD OUT: the driver against TREE's headers, BUILD's objects
 	_inc=$(for d in "$1"/src/lib/*/; do printf ' -I%s' "$d"; done)
-	# shellcheck disable=SC2046,SC2086
+	_obj=$(for o in "$2"/src/etch/*.o; do case $o in */main.o) ;; *) printf ' %s' "$o" ;; esac; done)
+	# shellcheck disable=SC2086
 	${CC:-cc} -O2 -std=c11 -D_XOPEN_SOURCE=700 $_inc -I"$1/src/etch" -o "$3" solve.c \
-		$(ls "$2"/src/etch/*.o | grep -v '/main\.o$') "$2/libsample3d.a" -lm -lpthread
+		$_obj "$2/libsample3d.a" -lm -lpthread
 }
 solve_driver "$tmp/sbase" "$tmp/sbase/build" solve-old || { echo "fmm-speed: solve driver (old) not built"; exit 1; }
 solve_driver "$TOP" "$BUILD" solve-new || { echo "fmm-speed: solve driver (new) not built"; exit 1; }
