@@ -6,9 +6,24 @@
  * the TRIAL node of least T is accepted next and its neighbours are
  * updated from their KNOWN neighbours only, so T is computed in
  * increasing order and every node once: O(N log N) with a binary heap.
- * The heap (4-ary) holds (T, node) pairs by value, so sifting touches
- * one array, and an index per node gives the heap position for
+ * The heap (4-ary) holds (T, node, slot) entries by value, so sifting
+ * touches one array, and the node's slot holds its heap position for
  * decrease-key.
+ *
+ * A TRIAL node is updated once for every neighbour accepted before it,
+ * each time from all its KNOWN neighbours, and the slowness of a cell
+ * (cell_slowness: a logarithm and the limited curvature of four rates)
+ * depends on the rates alone: so each TRIAL node holds, in a slot of its
+ * own (struct cells, numbered per node), the cell slownesses it has
+ * computed towards its upwind neighbours, and those of the cells beyond
+ * them that the second-order form reads, which the neighbour, when
+ * accepted, hands over from its own slot.  Every value is computed by
+ * the same function from the same rates as without the slots, so T is
+ * the same to the last bit; the slots cost memory in proportion to the
+ * front (the TRIAL nodes: the whole developed surface of the moment,
+ * some 20-30 nodes an x-y column on the examples), not the grid (on
+ * examples/contact without bake, three cell slownesses a node computed
+ * instead of eleven).
  *
  * The update (Sethian & Vladimirsky's second-order upwind scheme):
  * along each axis take the KNOWN neighbour of smaller T, T1; if the next
@@ -75,6 +90,20 @@ enum { ARITY = 4 };
 struct heap_ent {
 	double t;
 	int32_t n;
+	int32_t slot;           /* the node's struct cells (in the padding) */
+};
+
+/* What a TRIAL node has computed of the cells around it, per axis d:
+ * near[d] the cell to its upwind neighbour, far[d] the next cell beyond
+ * that neighbour (the second-order form's), for the direction the bits
+ * of up say (bit d for near, 3 + d for far: towards +d), where the bits
+ * of has say a value is there.  One direction per axis, as the upwind
+ * neighbour of an axis seldom changes side: the slot is 56 bytes. */
+struct cells {
+	double near[3];
+	double far[3];
+	int32_t pos;            /* the node's place in the heap */
+	unsigned char has, up;
 };
 
 struct solver {
@@ -87,10 +116,58 @@ struct solver {
 	unsigned char *state;
 	int nodal;              /* fmm_solve_nodal: the node's own slowness */
 	int linear;             /* the rate linear between nodes (fmm_solve_linear) */
-	int32_t *pos;           /* heap position of TRIAL nodes */
-	struct heap_ent *heap;
+	int32_t *slot;          /* the slot of TRIAL nodes */
+	struct heap_ent *heap;  /* in heap_mem, placed so that the four
+				 * children of an entry share a cache line */
+	struct heap_ent *heap_mem;
 	size_t nheap;
+	struct cells **blocks;  /* the slots, SLOT_BLOCK a block: one per
+				 * TRIAL node, in memory that grows with the
+				 * front without a copy */
+	int32_t *free_slots;    /* slots not in use, a stack */
+	size_t nslots, nfree;   /* slots made, of which free */
 };
+
+enum { SLOT_BLOCK = 1 << 14 };
+
+static struct cells *cells_of(const struct solver *s, int32_t q)
+{
+	return &s->blocks[q / SLOT_BLOCK][q % SLOT_BLOCK];
+}
+
+/* An empty slot for a node becoming TRIAL. */
+static int32_t slot_new(struct solver *s)
+{
+	int32_t q;
+	if (s->nfree > 0) {
+		q = s->free_slots[--s->nfree];
+	} else {
+		if (s->nslots % SLOT_BLOCK == 0) {
+			size_t nb = s->nslots / SLOT_BLOCK + 1;
+			s->blocks = xreallocarray(s->blocks, nb, sizeof *s->blocks);
+			s->blocks[nb - 1] = xreallocarray(NULL, SLOT_BLOCK, sizeof **s->blocks);
+			s->free_slots = xreallocarray(s->free_slots, nb * SLOT_BLOCK,
+						      sizeof *s->free_slots);
+		}
+		q = (int32_t)s->nslots++;
+	}
+	cells_of(s, q)->has = 0;
+	return q;
+}
+
+static void slots_free(struct solver *s)
+{
+	for (size_t b = 0; b * SLOT_BLOCK < s->nslots; b++)
+		free(s->blocks[b]);
+	free(s->blocks);
+	free(s->free_slots);
+}
+
+static void slot_free(struct solver *s, int32_t q)
+{
+	if (q >= 0)
+		s->free_slots[s->nfree++] = q;
+}
 
 static void sift_up(struct solver *s, size_t i)
 {
@@ -100,11 +177,11 @@ static void sift_up(struct solver *s, size_t i)
 		if (s->heap[p].t <= e.t)
 			break;
 		s->heap[i] = s->heap[p];
-		s->pos[s->heap[i].n] = (int32_t)i;
+		cells_of(s, s->heap[i].slot)->pos = (int32_t)i;
 		i = p;
 	}
 	s->heap[i] = e;
-	s->pos[e.n] = (int32_t)i;
+	cells_of(s, e.slot)->pos = (int32_t)i;
 }
 
 /* Removing the root: the hole walks down to a leaf along the smaller
@@ -123,7 +200,7 @@ static void remove_root(struct solver *s)
 			if (s->heap[q].t < s->heap[best].t)
 				best = q;
 		s->heap[i] = s->heap[best];
-		s->pos[s->heap[i].n] = (int32_t)i;
+		cells_of(s, s->heap[i].slot)->pos = (int32_t)i;
 		i = best;
 	}
 	if (i != n - 1) {
@@ -133,27 +210,37 @@ static void remove_root(struct solver *s)
 	s->nheap = n - 1;
 }
 
-/* Makes node n TRIAL with time t, or lowers its time to t. */
-static void offer(struct solver *s, size_t n, double t)
+/* Makes node n TRIAL with time t and the slot q (slot_new), or lowers
+ * its time to t. */
+static void offer(struct solver *s, size_t n, double t, int32_t q)
 {
 	if (s->state[n] == FAR) {
 		s->state[n] = TRIAL;
 		s->t[n] = t;
 		s->heap[s->nheap].t = t;
 		s->heap[s->nheap].n = (int32_t)n;
+		s->heap[s->nheap].slot = q;
+		s->slot[n] = q;
 		s->nheap++;
 		sift_up(s, s->nheap - 1);
 	} else if (s->state[n] == TRIAL && t < s->t[n]) {
 		s->t[n] = t;
-		size_t i = (size_t)s->pos[n];
+		size_t i = (size_t)cells_of(s, s->slot[n])->pos;
 		s->heap[i].t = t;
 		sift_up(s, i);
 	}
 }
 
-static size_t pop(struct solver *s)
+/* The slot of node n: its own if TRIAL, else a new one. */
+static int32_t slot_of(struct solver *s, size_t n)
+{
+	return s->state[n] == TRIAL ? s->slot[n] : slot_new(s);
+}
+
+static size_t pop(struct solver *s, int32_t *slot)
 {
 	size_t n = (size_t)s->heap[0].n;
+	*slot = s->heap[0].slot;
 	remove_root(s);
 	return n;
 }
@@ -271,8 +358,23 @@ static double cell_slowness(const struct solver *s, size_t a, ptrdiff_t o, int c
 	return rlo > 0 ? fmin(fmax(f, 1 / rhi), 1 / rlo) : fmax(f, 1 / rhi);
 }
 
-/* The upwind update of node n at grid position c (see the note above). */
-static double update(const struct solver *s, size_t n, const int c[3])
+/* cell_slowness of the cell from a towards a + o, kept in *v with the
+ * bit b of cl's has and up (up: o > 0). */
+static double cell_slowness_memo(const struct solver *s, struct cells *cl, double *v, int b,
+				 size_t a, ptrdiff_t o, int ca, int dir, int hi)
+{
+	unsigned char bit = (unsigned char)(1u << b), up = o > 0 ? bit : 0;
+	if (!(cl->has & bit) || (cl->up & bit) != up) {
+		*v = cell_slowness(s, a, o, ca, dir, hi);
+		cl->has |= bit;
+		cl->up = (unsigned char)((cl->up & ~bit) | up);
+	}
+	return *v;
+}
+
+/* The upwind update of node n at grid position c (see the note above),
+ * its cell slownesses kept in cl. */
+static double update(const struct solver *s, size_t n, const int c[3], struct cells *cl)
 {
 	double a[3], b[3];
 	int m = 0;
@@ -298,10 +400,11 @@ static double update(const struct solver *s, size_t n, const int c[3])
 		 * cell (first order), or the second-order combination of the
 		 * two cells' means, in place of the node's own */
 		int dir = o > 0 ? 1 : -1;
-		double f1 = cell_slowness(s, n, o, c[d], dir, hi), f = f1;
+		double f1 = cell_slowness_memo(s, cl, &cl->near[d], d, n, o, c[d], dir, hi), f = f1;
 		double aa, bb;
 		if (t2 <= t1 &&
-		    (f = 0.5 * (3 * f1 - cell_slowness(s, n + o, o, c[d] + dir, dir, hi))) > 0) {
+		    (f = 0.5 * (3 * f1 - cell_slowness_memo(s, cl, &cl->far[d], 3 + d, n + o, o,
+							     c[d] + dir, dir, hi))) > 0) {
 			aa = s->a2[d];
 			bb = (4 * t1 - t2) / 3;
 		} else {
@@ -336,8 +439,10 @@ static double update(const struct solver *s, size_t n, const int c[3])
 	return t;
 }
 
-/* Updates the non-KNOWN, reachable neighbours of the node just accepted. */
-static void relax(struct solver *s, size_t n, const int c[3])
+/* Updates the non-KNOWN, reachable neighbours of the node just accepted,
+ * handing each the slowness of the cell beyond n from n's slot ns (-1:
+ * none, a source node). */
+static void relax(struct solver *s, size_t n, const int c[3], int32_t ns)
 {
 	for (int d = 0; d < 3; d++)
 		for (int dir = -1; dir <= 1; dir += 2) {
@@ -349,7 +454,22 @@ static void relax(struct solver *s, size_t n, const int c[3])
 				continue;
 			int cm[3] = {c[0], c[1], c[2]};
 			cm[d] = cd;
-			offer(s, m, update(s, m, cm));
+			int32_t q = slot_of(s, m);
+			struct cells *cl = cells_of(s, q);
+			/* from m, n lies towards -dir: the cell beyond n in
+			 * that direction is n's own cell towards -dir, if n
+			 * has it */
+			if (ns >= 0) {
+				const struct cells *cn = cells_of(s, ns);
+				unsigned char bn = (unsigned char)(1u << d), up = dir < 0 ? bn : 0;
+				unsigned char bf = (unsigned char)(bn << 3);
+				if ((cn->has & bn) && (cn->up & bn) == up) {
+					cl->far[d] = cn->near[d];
+					cl->has |= bf;
+					cl->up = (unsigned char)((cl->up & ~bf) | (up << 3));
+				}
+			}
+			offer(s, m, update(s, m, cm, cl), q);
 		}
 }
 
@@ -498,9 +618,15 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
 	s->t = f->t;
 	s->slow = xreallocarray(NULL, total, sizeof *s->slow);
 	s->state = xcalloc(total, 1);
-	s->pos = xreallocarray(NULL, total, sizeof *s->pos);
-	s->heap = xreallocarray(NULL, total, sizeof *s->heap);
+	s->slot = xreallocarray(NULL, total, sizeof *s->slot);
+	/* 64-byte lines: entries 4i + 1 .. 4i + 4, the children of i, fill
+	 * one line when entry 1 starts a line (malloc aligns to 16) */
+	s->heap_mem = xreallocarray(NULL, total + 3, sizeof *s->heap);
+	s->heap = s->heap_mem + (4 - ((uintptr_t)s->heap_mem / sizeof *s->heap + 1) % 4) % 4;
 	s->nheap = 0;
+	s->blocks = NULL;
+	s->free_slots = NULL;
+	s->nslots = s->nfree = 0;
 	int ref[3] = {refine ? refine[0] : 1, refine ? refine[1] : 1, refine ? refine[2] : 1};
 	for (size_t n = 0; n < total; n++)
 		f->t[n] = FMM_UNREACHED;
@@ -531,12 +657,14 @@ static struct fmm *setup(const struct ratefile *r, const int refine[3], int line
  * only as far as a query needs (fmm_time_at_settled). */
 static void accept_next(struct fmm *f, struct solver *s)
 {
-	size_t n = pop(s);
+	int32_t q;
+	size_t n = pop(s, &q);
 	s->state[n] = KNOWN;
 	f->accepted++;
 	int c[3];
 	coords(s, n, c);
-	relax(s, n, c);
+	relax(s, n, c, q);
+	slot_free(s, q);
 }
 
 /* The rates stay with the solution, for the surface (fmm_out.c); the
@@ -548,8 +676,9 @@ static void finish(struct fmm *f, struct solver *s)
 		s->slow[n] = s->slow[n] < INFINITY ? 1 / s->slow[n] : 0;
 	f->rate = s->slow;
 	free(s->state);
-	free(s->pos);
-	free(s->heap);
+	free(s->slot);
+	free(s->heap_mem);
+	slots_free(s);
 }
 
 static void march(struct fmm *f, struct solver *s)
@@ -573,7 +702,7 @@ static void start_top(struct fmm *f, struct solver *s)
 	for (size_t q = 0; q < plane; q++) {
 		int c[3];
 		coords(s, top + q, c);
-		relax(s, top + q, c);
+		relax(s, top + q, c, -1);
 	}
 }
 
@@ -633,7 +762,7 @@ static void start_points(const struct ratefile *r, struct fmm *f, struct solver 
 					 * uniform rate, second order for a smooth one */
 					double t = sqrt(dist) * 0.5 * (sp + s->slow[n]);
 					if (s->slow[n] < INFINITY && t < INFINITY)
-						offer(s, n, t);
+						offer(s, n, t, slot_of(s, n));
 				}
 	}
 }
@@ -732,8 +861,9 @@ void fmm_free(struct fmm *f)
 	if (f->march) {
 		free(f->march->s.slow);
 		free(f->march->s.state);
-		free(f->march->s.pos);
-		free(f->march->s.heap);
+		free(f->march->s.slot);
+		free(f->march->s.heap_mem);
+		slots_free(&f->march->s);
 		free(f->march);
 	}
 	free(f->t);
