@@ -28,7 +28,6 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <stdio.h>
 #include <string.h>
 
 /* grid line k of axis d, the expression iso.c places its points by */

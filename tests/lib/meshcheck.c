@@ -354,8 +354,6 @@ static int nodes(const char *pa, const char *pb, double cap)
 		double *d = xreallocarray(NULL, m + 1, sizeof *d), sum = 0;
 		for (size_t i = 0; i < m; i++) {
 			d[i] = nearest(&g, sb, v + 3 * i, cap, -1);
-			if (getenv("WORST") && d[i] > atof(getenv("WORST")))
-				fprintf(stderr, "%d %g %g %g %g\n", k + 1, v[3 * i], v[3 * i + 1], v[3 * i + 2], d[i]);
 			sum += d[i];
 		}
 		qsort(d, m, sizeof *d, cmpd);
