@@ -162,7 +162,9 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * in parallel (par.h), byte-identical for any thread count.  Decimated
  * sets are extracted and decimated tile by tile (one job per set and
  * tile, only the decimated triangles kept), and a tile whose nodes all
- * developed before the previous set's time is copied from that set. */
+ * developed before the previous set's time is copied from that set.  A
+ * decimated set is extracted on the z levels of fmm_levels (a share of
+ * tol; the decimator gets the rest). */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 		      const char *path3d, const char *path2d, int dense, double tol);
 
