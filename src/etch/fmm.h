@@ -162,9 +162,41 @@ long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx);
  * in parallel (par.h), byte-identical for any thread count.  Decimated
  * sets are extracted and decimated tile by tile (one job per set and
  * tile, only the decimated triangles kept), and a tile whose nodes all
- * developed before the previous set's time is copied from that set. */
+ * developed before the previous set's time is copied from that set.  A
+ * decimated set is extracted on the z levels of fmm_levels (a share of
+ * tol; the decimator gets the rest). */
 void fmm_write_curves(const struct fmm *f, const double *times, int ntimes,
 		      const char *path3d, const char *path2d, int dense, double tol);
+
+/* The z levels the surface at time t is extracted on for decimation
+ * (fmm_levels.c): a subset of f's z nodes, the same for every column,
+ * such that in the cells the surface crosses each node skipped has, by
+ * the coarser grid's interpolation, a value within err um of distance
+ * (|T - T'| R) of its own, and the cells' tetrahedra move it by no more
+ * (their mixed differences), values after tmax clamped to it.  Returns
+ * the grid on those levels, its z axis counting levels (bounds 0 ..
+ * nk-1, spacing 1; fmm_free frees it), and in *zl (allocated) their z,
+ * um; fmm_level_z maps a level coordinate u of its surface to z, affine
+ * in each layer.  *used is the largest estimate of the levels kept, um
+ * (at most err). */
+struct fmm *fmm_levels(const struct fmm *f, double t, double tmax, double err, double **zl,
+		       double *used);
+double fmm_level_z(const double *zl, int nk, double u);
+
+/* The share of the decimation bound that the z levels may take, and the
+ * margin on their estimate: the decimator is left tol less
+ * FMM_LEVEL_MARGIN times the largest estimate of the levels kept (on
+ * examples/contact without bake the distances measured exceeded the
+ * estimate by up to 30 %), so that the written surface stays within tol
+ * of the one extracted on every node.  The larger share is taken where it
+ * keeps at most a third of the z nodes (the smooth walls of a baked
+ * resist, whose slivers it removes), the smaller elsewhere (standing
+ * waves keep most levels, and the decimator needs the tol), if that
+ * keeps at most a third; else the set is extracted on every node with
+ * the whole tol for the decimator. */
+#define FMM_LEVEL_FRACTION 0.5
+#define FMM_LEVEL_FRACTION_LOW 0.25
+#define FMM_LEVEL_MARGIN 1.5
 
 /* The default decimation bound of fmm_write_curves (tol < 0, FMM_TOL_AUTO):
  * FMM_TOL_FRACTION of the rate grid's finer x-y spacing, um. */

@@ -26,6 +26,8 @@
 
 struct filter {
 	const struct fmm *f;
+	const double *zl;       /* the z of the levels extracted on (NULL: f's grid) */
+	int nk;
 	double tol[3];          /* how close to a face counts as on it, um */
 	iso_emit emit;
 	void *ctx;
@@ -52,6 +54,12 @@ static int on_face(const struct filter *fl, const double tri[9])
 static void filter_emit(void *ctx, const double tri[9])
 {
 	struct filter *fl = ctx;
+	double m[9];
+	if (fl->zl) {   /* level coordinates to z (fmm_levels) */
+		for (int q = 0; q < 9; q++)
+			m[q] = q % 3 == 2 ? fmm_level_z(fl->zl, fl->nk, tri[q]) : tri[q];
+		tri = m;
+	}
 	if (on_face(fl, tri))
 		return;
 	fl->emit(fl->ctx, tri);
@@ -85,23 +93,36 @@ static long flat_top(const struct fmm *f, const int c0[2], const int c1[2], iso_
 	return count;
 }
 
+/* The levels a set is extracted on: the grid g (f's own, or fmm_levels'
+ * with the z of its levels zl, nk of them). */
+struct levels {
+	const struct fmm *g;
+	const double *zl;
+	int nk;
+	double tol;             /* the decimation bound left, um */
+};
+
 /* The surface over the cells c0[d] <= i < c1[d] (iso_surface_window's
- * numbering, the pad's layers included): fmm_surface for a part of the
- * grid, the parts of a partition giving its triangles in its order. */
-static long surface_window(const struct fmm *f, double t, const int c0[3], const int c1[3],
-			   iso_emit emit, void *ctx)
+ * numbering, the pad's layers included) of the grid lv (NULL: f's own):
+ * fmm_surface for a part of the grid, the parts of a partition giving its
+ * triangles in its order. */
+static long surface_window(const struct fmm *f, const struct levels *lv, double t, const int c0[3],
+			   const int c1[3], iso_emit emit, void *ctx)
 {
 	/* a surface needs cells: a grid one node thick in some axis has none */
 	if (f->n[0] < 2 || f->n[1] < 2 || f->n[2] < 2)
 		return 0;
 	if (t <= 0)
 		return flat_top(f, c0, c1, emit, ctx);
-	struct filter fl = {f, {0, 0, 0}, emit, ctx, 0};
+	struct filter fl = {f, lv ? lv->zl : NULL, lv ? lv->nk : 0, {0, 0, 0}, emit, ctx, 0};
 	/* iso.h snaps face caps onto the faces exactly; a millionth of a cell
 	 * only guards against the rounding of a face coordinate */
 	for (int d = 0; d < 3; d++)
 		fl.tol[d] = 1e-6 * f->h[d];
-	iso_surface_window(f->t, f->rate, f->n[0], f->n[1], f->n[2], f->bounds, t, 1, c0, c1,
+	const struct fmm *g = lv ? lv->g : f;
+	if (g->n[2] < 2)
+		return 0;
+	iso_surface_window(g->t, g->rate, g->n[0], g->n[1], g->n[2], g->bounds, t, 1, c0, c1,
 			   filter_emit, &fl);
 	return fl.count;
 }
@@ -109,7 +130,7 @@ static long surface_window(const struct fmm *f, double t, const int c0[3], const
 long fmm_surface(const struct fmm *f, double t, iso_emit emit, void *ctx)
 {
 	int c0[3] = {-1, -1, -1}, c1[3] = {f->n[0], f->n[1], f->n[2]};
-	return surface_window(f, t, c0, c1, emit, ctx);
+	return surface_window(f, NULL, t, c0, c1, emit, ctx);
 }
 
 struct tris {
@@ -292,9 +313,10 @@ static void extract_range(void *ctx, size_t lo, size_t hi, int worker)
  * copied from that set instead. */
 struct tiled {
 	const struct fmm *f;
+	struct levels *lv;      /* per set of the batch, the grid its tiles are
+				 * extracted on */
 	const double *times;    /* the batch's times; times[-1] the previous set's if prev */
 	int prev;               /* a set was written before the batch */
-	double tol;
 	struct tiling tl;
 	const double *tmax;     /* per tile: the latest arrival time of its nodes */
 	struct tri_mesh *out;   /* per job (set q, tile k: q * ntiles + k) */
@@ -366,12 +388,12 @@ static void tile_range(void *ctx, size_t lo, size_t hi, int worker)
 			continue;
 		int c0[3], c1[3];
 		double keep[4];
-		tile_cells(b->f, &b->tl, k, c0, c1);
+		tile_cells(b->lv[q].g, &b->tl, k, c0, c1);
 		tile_keep(b->f, &b->tl, k, keep);
 		w->eps = fmm_weld_eps(b->f);
-		surface_window(b->f, b->times[q], c0, c1, weld_collect, w);
+		surface_window(b->f, &b->lv[q], b->times[q], c0, c1, weld_collect, w);
 		tri_mesh_free(o);
-		fmm_decimate_tile(b->f, w, b->tol, keep, o);
+		fmm_decimate_tile(b->f, w, b->lv[q].tol, keep, o);
 	}
 }
 
@@ -442,14 +464,56 @@ static void tri_mesh_copy(struct tri_mesh *to, const struct tri_mesh *from)
 	to->nt = from->nt;
 }
 
+static void levels_free(const struct fmm *f, struct levels *lv)
+{
+	if (lv->g != f)
+		fmm_free((struct fmm *)lv->g);
+	free((double *)lv->zl);
+	*lv = (struct levels){NULL, NULL, 0, 0};
+}
+
+/* The levels of the set at time t (t <= 0, the flat top: f's own) within
+ * a share of tol, and the decimation bound left: tol less the levels'
+ * estimate, with a margin for the estimate's own error. */
+static void levels_of(const struct fmm *f, struct levels *lv, double t, double tmax, double tol)
+{
+	levels_free(f, lv);
+	if (t <= 0) {
+		*lv = (struct levels){f, NULL, 0, tol};
+		return;
+	}
+	double *zl, used;
+	lv->g = fmm_levels(f, t, tmax, FMM_LEVEL_FRACTION * tol, &zl, &used);
+	if (3 * (long)lv->g->n[2] > (long)f->n[2]) {
+		fmm_free((struct fmm *)lv->g);
+		free(zl);
+		lv->g = fmm_levels(f, t, tmax, FMM_LEVEL_FRACTION_LOW * tol, &zl, &used);
+	}
+	if (3 * (long)lv->g->n[2] > (long)f->n[2]) {  /* too few removed to pay */
+		fmm_free((struct fmm *)lv->g);
+		free(zl);
+		*lv = (struct levels){f, NULL, 0, tol};
+		return;
+	}
+	lv->zl = zl;
+	lv->nk = lv->g->n[2];
+	lv->tol = tol - FMM_LEVEL_MARGIN * used;
+}
+
 static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 			struct plot_writer *w3, struct plot_writer *w2, double tol)
 {
 	int nb = par_threads();
-	struct tiled b = {f, times, 0, tol, tiling_of(f), NULL, NULL, NULL};
+	/* the surfaces extracted on z levels within a share of tol, and
+	 * decimated within the rest */
+	double tmax = 0;
+	for (int q = 0; q < ntimes; q++)
+		tmax = fmax(tmax, times[q]);
+	struct levels *lv = xcalloc((size_t)nb, sizeof *lv);
+	struct tiled b = {f, lv, times, 0, tiling_of(f), NULL, NULL, NULL};
 	size_t nt = (size_t)b.tl.ntile[0] * (size_t)b.tl.ntile[1];
-	double *tmax = tile_tmax(f, &b.tl);
-	b.tmax = tmax;
+	double *tmaxs = tile_tmax(f, &b.tl);
+	b.tmax = tmaxs;
 	struct tri_mesh *out = xcalloc((size_t)nb * nt, sizeof *out);
 	struct tri_mesh *last = xcalloc(nt, sizeof *last);      /* the previous set's tiles */
 	b.weld = xcalloc((size_t)nb, sizeof *b.weld);
@@ -459,6 +523,8 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 		b.times = times + k0;
 		b.prev = k0 > 0;
 		b.out = out;
+		for (int q = 0; q < m; q++)
+			levels_of(f, &lv[q], times[k0 + q], tmax, tol);
 		par_for((size_t)m * nt, 1, tile_range, &b);
 		for (int q = 0; q < m; q++) {
 			struct tri_mesh *set = out + (size_t)q * nt;
@@ -489,7 +555,10 @@ static void write_tiled(const struct fmm *f, const double *times, int ntimes,
 	free(last);
 	free(b.weld);
 	free(start);
-	free(tmax);
+	free(tmaxs);
+	for (int q = 0; q < nb; q++)
+		levels_free(f, &lv[q]);
+	free(lv);
 }
 
 void fmm_write_curves(const struct fmm *fine, const double *times, int ntimes,

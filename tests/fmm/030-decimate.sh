@@ -13,7 +13,8 @@
 #   cut the standing-wave ripples' chords);
 # - conforming: no edge of three triangles or of two in one direction, no
 #   open edge off the box faces, the same Euler characteristic;
-# - at most half the dense triangles (measured 0.22 with bake, 0.42 without);
+# - at most half the dense triangles (measured 0.21-0.25 with bake, 0.40-0.45
+#   without);
 # - the contact's CDs at 10, 50, 90 % of the height (measure -rel) within
 #   0.001 um of the dense surface's.
 . "$TOP/tests/lib/common.sh"

@@ -21,6 +21,13 @@
  *     over the triangles a uniform grid of cells lists near the point; a
  *     point's search ends at a triangle within the largest distance so
  *     far, which that point cannot change (the result of a full search).
+ *
+ *   meshcheck nodes A.plot B.plot CAP
+ *     per set pair one line "set k nodes n mean m p95 p max x": the
+ *     distances (um) from the distinct vertices of A's triangles to the
+ *     nearest triangle of B (full search among those listed near the
+ *     vertex; beyond CAP reported as CAP), their mean, 95th percentile
+ *     (nearest rank) and largest.
  */
 #include "fmt_plot.h"
 #include "util.h"
@@ -320,6 +327,62 @@ static int dist(const char *pa, const char *pb, double cap)
 	return 0;
 }
 
+static int cmp3(const void *x, const void *y)
+{
+	const double *a = x, *b = y;
+	for (int d = 0; d < 3; d++)
+		if (a[d] != b[d])
+			return a[d] < b[d] ? -1 : 1;
+	return 0;
+}
+
+static int cmpd(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return a < b ? -1 : a > b;
+}
+
+static int nodes(const char *pa, const char *pb, double cap)
+{
+	struct plot_file *a = fmt_plot_read(pa, 3), *b = fmt_plot_read(pb, 3);
+	if (a->nsets != b->nsets)
+		die("%s has %d sets, %s %d", pa, a->nsets, pb, b->nsets);
+	for (int k = 0; k < a->nsets; k++) {
+		const struct plot_set *sa = &a->sets[k], *sb = &b->sets[k];
+		double t[9];
+		for (int c = 0; c < sb->ncurves; c++)
+			tri_of(sb, c, pb, k, t);
+		size_t n = 3 * (size_t)sa->ncurves, m = 0;
+		double *v = xreallocarray(NULL, 3 * n + 1, sizeof *v);
+		for (int c = 0; c < sa->ncurves; c++) {
+			tri_of(sa, c, pa, k, t);
+			memcpy(v + 9 * (size_t)c, t, sizeof t);
+		}
+		qsort(v, n, 3 * sizeof *v, cmp3);
+		for (size_t i = 0; i < n; i++)
+			if (m == 0 || cmp3(v + 3 * i, v + 3 * (m - 1)) != 0)
+				memmove(v + 3 * m++, v + 3 * i, 3 * sizeof *v);
+		struct grid g = {{0, 0, 0}, {0, 0, 0}, NULL, NULL};
+		grid_build(&g, sb, cap);
+		double *d = xreallocarray(NULL, m + 1, sizeof *d), sum = 0;
+		for (size_t i = 0; i < m; i++) {
+			d[i] = nearest(&g, sb, v + 3 * i, cap, -1);
+			sum += d[i];
+		}
+		qsort(d, m, sizeof *d, cmpd);
+		size_t r95 = m ? (size_t)ceil(0.95 * (double)m) - 1 : 0;
+		printf("set %d nodes %zu mean %.6g p95 %.6g max %.6g\n", k + 1, m, m ? sum / (double)m : 0,
+		       m ? d[r95] : 0, m ? d[m - 1] : 0);
+		free(g.start);
+		free(g.item);
+		free(d);
+		free(v);
+	}
+	fmt_plot_free(a);
+	fmt_plot_free(b);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	util_setprog("meshcheck");
@@ -327,5 +390,7 @@ int main(int argc, char **argv)
 		return stat(argv[2]);
 	if (argc == 5 && strcmp(argv[1], "dist") == 0)
 		return dist(argv[2], argv[3], atof(argv[4]));
-	die("usage: meshcheck stat FILE.plot | meshcheck dist A.plot B.plot CAP");
+	if (argc == 5 && strcmp(argv[1], "nodes") == 0)
+		return nodes(argv[2], argv[3], atof(argv[4]));
+	die("usage: meshcheck stat FILE.plot | meshcheck dist|nodes A.plot B.plot CAP");
 }
