@@ -365,8 +365,10 @@ static int nodes(const char *pa, const char *pb, double cap)
 		struct grid g = {{0, 0, 0}, {0, 0, 0}, NULL, NULL};
 		grid_build(&g, sb, cap);
 		double *d = xreallocarray(NULL, m + 1, sizeof *d), sum = 0;
+		size_t hint = 0;
 		for (size_t i = 0; i < m; i++) {
-			d[i] = nearest(&g, sb, v + 3 * i, cap, -1);
+			/* no triangle to be near: every point at cap */
+			d[i] = sb->ncurves ? nearest(&g, sb, v + 3 * i, cap, -1, &hint) : cap;
 			sum += d[i];
 		}
 		qsort(d, m, sizeof *d, cmpd);
