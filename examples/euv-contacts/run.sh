@@ -12,7 +12,12 @@ here=$(cd "$(dirname "$0")" && pwd)
 command -v sample3D >/dev/null 2>&1 || PATH=$here/../../build/bin:$PATH
 out=${OUT:-$here/out}
 mkdir -p "$out" && cd "$out"
-sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 20 -pt 20 -method fmm "$@"
+# -refine 8: fast marching's automatic z refinement follows the
+# largest rate ratio between neighbouring z nodes, meant for standing
+# waves (off here); the shot noise of every 2 nm voxel takes it to its
+# cap, 16.  Eight gives the same summary (22.7 nm, 4.8 nm, 2 pockets;
+# every hole's diameter within 0.06 nm of 16's) in under half the time.
+sample3D -if "$here/mask.in" -bf "$here/resist.in" -et 20 -pt 20 -method fmm -refine 8 "$@"
 # -force: the noisy surface may touch itself
 measure -force -rel 50 -lcdu -holes -o holes.txt curves.plot
 awk '/^#/ { next } { if ($3 >= 0.012) { s += $3; s2 += $3 * $3; n++ } else p++ }

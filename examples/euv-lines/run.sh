@@ -16,7 +16,11 @@ for dose in 30 60; do
 	mkdir -p "d$dose"
 	sed "s/^dose .*/dose $dose/" "$here/resist.in" >"d$dose/resist.in"
 	cd "d$dose"
-	sample3D -cf ../image.cont -bf resist.in -et 20 -pt 20 -method fmm -cut y 0 \
+	# -refine 8: fast marching's automatic z refinement, meant for
+	# standing waves (off here), follows the shot noise of every voxel
+	# to its cap, 16; eight gives the same figures (width, LER, LWR,
+	# correlation length within 0.05 nm) in about half the time
+	sample3D -cf ../image.cont -bf resist.in -et 20 -pt 20 -method fmm -refine 8 -cut y 0 \
 		-measure "-force -rel 10,50,90 -line 0 0 x" "$@" >cd.txt
 	echo "$dose mJ/cm2: line width (um) at 10, 50, 90 % of the thickness:" \
 		$(awk '!/^#/ { print $2 }' cd.txt)

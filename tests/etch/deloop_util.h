@@ -23,7 +23,9 @@
 
 #define EDGE_MARGIN 1e-7
 
-struct xbox { double lo, hi; int t; };
+/* A triangle's box: x bounds (the sweep's order), y and z bounds (a
+ * segment whose box misses them cannot cross it: a rejection only). */
+struct xbox { double lo, hi, ylo, yhi, zlo, zhi; int t; };
 
 static int cmp_xbox(const void *a, const void *b)
 {
@@ -86,13 +88,14 @@ static inline long crossings_independent(const struct mesh *m)
 	for (size_t t = 0; t < m->ntri; t++) {
 		if (!m->tri[t].alive)
 			continue;
-		double lo = INFINITY, hi = -INFINITY;
-		for (int j = 0; j < 3; j++) {
-			lo = fmin(lo, m->node[m->tri[t].n[j]].p[0]);
-			hi = fmax(hi, m->node[m->tri[t].n[j]].p[0]);
-		}
-		bx[n++] = (struct xbox){lo, hi, (int)t};
-		wmax = fmax(wmax, hi - lo);
+		double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+		for (int j = 0; j < 3; j++)
+			for (int d = 0; d < 3; d++) {
+				lo[d] = fmin(lo[d], m->node[m->tri[t].n[j]].p[d]);
+				hi[d] = fmax(hi[d], m->node[m->tri[t].n[j]].p[d]);
+			}
+		bx[n++] = (struct xbox){lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], (int)t};
+		wmax = fmax(wmax, hi[0] - lo[0]);
 	}
 	qsort(bx, n, sizeof *bx, cmp_xbox);
 	long count = 0;
@@ -112,7 +115,8 @@ static inline long crossings_independent(const struct mesh *m)
 				b = mid;
 		}
 		for (size_t k = a; k < n && bx[k].lo <= hi; k++) {
-			if (bx[k].hi < lo)
+			if (bx[k].hi < lo || bx[k].yhi < fmin(p[1], q[1]) || bx[k].ylo > fmax(p[1], q[1]) ||
+			    bx[k].zhi < fmin(p[2], q[2]) || bx[k].zlo > fmax(p[2], q[2]))
 				continue;
 			const struct triangle *tr = &m->tri[bx[k].t];
 			int touch = 0;
