@@ -210,7 +210,7 @@ example_figures() {
 		_w=$(awk '!/^#/ && ++k == 2 { print 1000 * $2 }' "$_o/d60/cd.txt")
 		readme_figure euv-lines "over-exposed to about 4 nm" 4 "$_w" 0.5
 		_l=$(awk '$2 == "ler" { print 1000 * ($4 + $6) / 2 }' "$_o/d60/ler.txt")
-		readme_figure euv-lines "LER 1.5 nm" 1.5 "$_l" 0.05 ;;
+		readme_figure euv-lines "LER 1.55 nm" 1.55 "$_l" 0.005 ;;
 	arf-immersion-lines)
 		# the image stacks' mid-depth contrast, and the beams' angle in the
 		# resist from the stack's wavelength and index and the window's one
