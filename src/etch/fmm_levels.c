@@ -28,6 +28,7 @@
  * non-uniform grid (fmm_level_z).
  */
 #include "fmm.h"
+#include "iso.h"
 #include "util.h"
 
 #include <math.h>
@@ -38,27 +39,6 @@
 static double line(const struct fmm *f, int d, int k)
 {
 	return f->bounds[2 * d] + (f->bounds[2 * d + 1] - f->bounds[2 * d]) * k / (f->n[d] - 1);
-}
-
-/* The value between a (value fa, rate wa) and b at the fraction s of the
- * way: the inverse of iso_crossing, whose level at fraction s this is. */
-static double value_at(double fa, double wa, double fb, double wb, double s)
-{
-	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
-		return fa + s * (fb - fa);
-	if (fb < fa) {
-		double x = fa;
-		fa = fb;
-		fb = x;
-		x = wa;
-		wa = wb;
-		wb = x;
-		s = 1 - s;
-	}
-	double lr = log(wb / wa), phi = s;
-	if (fabs(lr) > 1e-12)
-		phi = log1p(s * expm1(lr)) / lr;
-	return fa + phi * (fb - fa);
 }
 
 /* A span's test: the grid, the set's time t, values clamped at tm (the
@@ -166,7 +146,7 @@ static int span_ok(struct span *sp, int a, int b)
 		for (size_t c = 0; c < nxy; c++) {
 			if (!sp->near[c])
 				continue;
-			double tc = value_at(ta[c], ra[c], tb[c], rb[c], s);
+			double tc = iso_value_at(ta[c], ra[c], tb[c], rb[c], s);
 			double d = fabs(fmin(tk[c], tm) - fmin(tc, tm));
 			if (d == 0)
 				continue;

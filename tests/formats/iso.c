@@ -21,6 +21,8 @@
  *     edges of about 1e-8 and must all be there, watertight as in 1 (a
  *     threshold on their area once left a hole there, which measure
  *     refuses as a gap of the surface).
+ *  6. iso_value_at inverts iso_crossing (both edge models, either order of
+ *     the ends): the crossing of the value at s is s within 1e-12.
  */
 #include "iso.h"
 #include "util.h"
@@ -169,6 +171,16 @@ int main(void)
 	iso_surface(f, N, N, N, b, 0.25 + 1e-8, 0, keep, &a);
 	CHECK(open_edges(&a) == 0, "sphere a hair above grid points: %ld unmatched edges", open_edges(&a));
 	printf("sphere at 0.25 + 1e-8: %zu triangles, %ld unmatched edges\n", a.n, open_edges(&a));
+
+	double worst = 0;
+	const double ends[4][4] = {{1, 0, 2, 0}, {2, 0, 1, 0}, {1, 0.5, 3, 2}, {3, 2, 1, 0.5}};
+	for (int e = 0; e < 4; e++)
+		for (int k = 0; k <= 10; k++) {
+			const double s = k / 10.0, *q = ends[e];
+			double c = iso_crossing(q[0], q[1], q[2], q[3], iso_value_at(q[0], q[1], q[2], q[3], s));
+			worst = fmax(worst, fabs(c - s));
+		}
+	CHECK(worst < 1e-12, "iso_value_at: its crossing is off by %g", worst);
 
 	free(a.t);
 	free(f);

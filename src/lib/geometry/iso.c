@@ -82,6 +82,27 @@ double iso_crossing(double fa, double wa, double fb, double wb, double level)
 	return flip ? 1 - phi : phi;
 }
 
+/* The inverse of iso_crossing: the level whose crossing lies at fraction
+ * s of the way from a to b, by the same edge model. */
+double iso_value_at(double fa, double wa, double fb, double wb, double s)
+{
+	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
+		return fa + s * (fb - fa);
+	if (fb < fa) {
+		double x = fa;
+		fa = fb;
+		fb = x;
+		x = wa;
+		wa = wb;
+		wb = x;
+		s = 1 - s;
+	}
+	double lr = log(wb / wa), phi = s;
+	if (fabs(lr) > 1e-12)
+		phi = log1p(s * expm1(lr)) / lr;
+	return fa + phi * (fb - fa);
+}
+
 static void lerp(const double *a, double fa, double wa, const double *b, double fb, double wb,
 		 double level, double *out)
 {

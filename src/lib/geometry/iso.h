@@ -51,4 +51,10 @@ long iso_surface_window(const double *f, const double *w, int nx, int ny, int nz
  * places it (linear in f where a speed is not positive). */
 double iso_crossing(double fa, double wa, double fb, double wb, double level);
 
+/* The inverse of iso_crossing: the value at fraction s of the way from a
+ * to b by the same edge model (linear without speeds, else the integral
+ * of 1/w), so that iso_crossing(fa, wa, fb, wb, iso_value_at(..., s)) is s
+ * up to rounding. */
+double iso_value_at(double fa, double wa, double fb, double wb, double s);
+
 #endif
