@@ -32,6 +32,15 @@
  * marching; the image and the rates are interpolated linearly, second
  * order), which of the orders 1 and 2 gives the larger estimate; fem
  * passes the order its nominal point showed over three solves.
+ *
+ * Refinement by axis (the drivers' -accuracy P): when the error is a sum
+ * of terms, one per group of axes (the image grid x-y; the points through
+ * the resist, z), C h_xy^p + D h_z^q, the change made by refining one
+ * group does not depend on the level of the other.  The two changes of
+ * one group may then come from solves at different levels of the other
+ * (-coarser-fine names the finer solve of the earlier change), and the
+ * estimate of the other group's error (its own table's err, -plus) is
+ * added to this one's.
  */
 #include "measure.h"
 #include "fmt_measure.h"
@@ -158,25 +167,47 @@ static void untrusted(const struct options *o, const struct row *w, double e1, d
 	     e1, e2, why, w->err, ORDER_MIN);
 }
 
+/* The CD of row i of the coarser change's finer solve: -coarser-fine's
+ * table when given, else -coarse's. */
+static double coarser_fine_cd(const struct measure_table *c, const struct measure_table *cf,
+			      int i)
+{
+	return (cf ? cf : c)->rows[i].cd;
+}
+
 int accuracy_estimate(const struct options *o, struct result *r)
 {
-	struct measure_table c, cc;
+	struct measure_table c, cc, cf, pl;
 	read_same(o->coarse, o, r, &c);
 	if (o->coarser)
 		read_same(o->coarser, o, r, &cc);
+	if (o->coarser_fine)
+		read_same(o->coarser_fine, o, r, &cf);
+	if (o->plus) {
+		read_same(o->plus, o, r, &pl);
+		if (!pl.have_err) {
+			fmt_measure_free(&pl);
+			die("%s: no err column: -plus takes a table of measure -accuracy", o->plus);
+		}
+	}
+	const struct measure_table *cfp = o->coarser_fine ? &cf : NULL;
 	int over = 0;
 	for (int i = 0; i < r->nrows; i++) {
 		struct row *w = &r->rows[i];
 		int trusted = 1;
 		if (o->coarser) {
-			double p;
-			trusted = three_levels(w->cd, c.rows[i].cd, cc.rows[i].cd, o->ratio,
+			double p, c1 = coarser_fine_cd(&c, cfp, i);
+			/* the changes alone enter: cd1 - cd2 is c1 - cd(-coarser) */
+			trusted = three_levels(w->cd, c.rows[i].cd,
+					       c.rows[i].cd - (c1 - cc.rows[i].cd), o->ratio,
 					       o->ratio2, &w->err, &p);
 			if (!trusted)
-				untrusted(o, w, c.rows[i].cd - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
+				untrusted(o, w, c1 - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
 		} else {
 			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);
 		}
+		if (o->plus)
+			w->err += pl.rows[i].err;
 		if (o->accuracy > 0 && (!trusted || w->err > o->accuracy / 100 * w->cd))
 			over++;
 	}
@@ -184,5 +215,9 @@ int accuracy_estimate(const struct options *o, struct result *r)
 	fmt_measure_free(&c);
 	if (o->coarser)
 		fmt_measure_free(&cc);
+	if (o->coarser_fine)
+		fmt_measure_free(&cf);
+	if (o->plus)
+		fmt_measure_free(&pl);
 	return over;
 }
