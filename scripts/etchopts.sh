@@ -72,10 +72,10 @@ etch_engine_default() {
 # solved once and measured; from the third level on, measure -accuracy
 # compares it with the two before (measure(1) ACCURACY: Richardson with
 # the order observed from the three, refused when they are not in the
-# asymptotic range) and writes the err column.  P: refine until every
-# err of a level from 0 on is under P % of its cd and trusted (at most
-# ACC_MAX_LEVEL); check: levels -2 to 0 only, the estimate of the inputs'
-# own grid.  A grid too coarse for level -2, or a level -2 a stage
+# asymptotic range) and writes the err column.  P: from level 0 on,
+# refine by axis group (accuracy_axes, below) until every err is under
+# P % of its cd and trusted (at most ACC_MAX_LEVEL in each group); check:
+# levels -2 to 0 only, the estimate of the inputs' own grid.  A grid too coarse for level -2, or a level -2 a stage
 # refuses, starts at -1 (three levels then need level 1 for P; check gets
 # the two-level estimate, order 1 assumed); a level below 0 that measure
 # refuses is left out of the estimate (check may then print no err).
