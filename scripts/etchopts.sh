@@ -253,8 +253,8 @@ accuracy_loop() {
 # and its own Richardson estimate (measure -coarser-fine), with its own
 # observed order and steadiness test, and a level's err is the sum of the
 # two (measure -plus).  Each step refines the group whose err is the
-# larger share of the CD (a refused one first; z on a tie, half the
-# cost), up to ACC_MAX_LEVEL per group; standing waves are a z error,
+# larger share of the CD (z on a tie, half the cost), up to
+# ACC_MAX_LEVEL per group; standing waves are a z error,
 # the edges of dense features an x-y one, and neither pays for the other.
 # Levels (KXY, KZ): the start, after the levels -2 and -1 of both, solves
 # (-2, -1) (a 32nd of level 0's cost; with level -2 it gives each group
@@ -330,10 +330,10 @@ acc_total() {
 	case $acc_st in 0|3) ;; *) cat "$acc_log" >&2; return 1 ;; esac
 }
 
-# acc_share TABLE: the largest err over its cd, 1e9 when the estimate
-# was refused (not in the asymptotic range: that group first)
+# acc_share TABLE: the largest err over its cd (where the changes were
+# not in the asymptotic range, measure's err is the estimate at order
+# 0.5, 2.4 times the last change)
 acc_share() {
-	if grep -q 'asymptotic' "${1%.dat}.log"; then echo 1e9; return; fi
 	awk '!/^#/ && $2 > 0 { e = $NF / $2; if (e > m) m = e } END { printf "%.6g\n", m }' "$1"
 }
 

@@ -22,9 +22,10 @@
  *   - opposite signs, the second change smaller: a damped oscillation
  *     about the limit, which then lies within |e2| of cd(h): err = |e2|;
  *   - otherwise (growing, or shrinking slower than ORDER_MIN) the levels
- *     are not in the asymptotic range: the row is refused whatever P
- *     (counted as over), with err the estimate at ORDER_MIN (not a
- *     bound: the real error may be larger) and a note on standard error.
+ *     are not in the asymptotic range: the row is refused (counted as
+ *     over), with err the estimate at ORDER_MIN (not a bound: the real
+ *     error may be larger) and a note on standard error, unless that
+ *     estimate is under a tenth of P % of the cd (SMALL_FRAC).
  * Changes both under NOISE_REL of the cd are below anything -accuracy
  * can ask and count as converged (err the two-solve estimate).
  * With two tables the order cannot be observed: p is -order's, by default
@@ -60,6 +61,12 @@ static const double SAFETY = 1.25;
 /* Changes under 1e-4 of the cd (0.01 %, a twentieth of the 0.2 % of the
  * references, docs/accuracy.md) are noise for every -accuracy asked. */
 static const double NOISE_REL = 1e-4;
+/* With P, a row whose solves are not in the asymptotic range but whose
+ * estimate at ORDER_MIN (2.4 times the last change) is under a tenth of
+ * P % of the cd is trusted: changes that small (a few 1e-4 of the cd) are
+ * at the level of the surface's own extraction and measurement, whose
+ * steadiness cannot be judged, and they matter to no P asked. */
+static const double SMALL_FRAC = 0.1;
 /* Two tables' heights agree to their printing resolution, 1e-6 um (a
  * height is printed rounded to it): a larger difference means another
  * resist thickness or other -at/-rel heights. */
@@ -201,7 +208,12 @@ int accuracy_estimate(const struct options *o, struct result *r)
 			trusted = three_levels(w->cd, c.rows[i].cd,
 					       c.rows[i].cd - (c1 - cc.rows[i].cd), o->ratio,
 					       o->ratio2, &w->err, &p);
-			if (!trusted)
+			/* changes too small to judge their steadiness: their
+			 * estimate at ORDER_MIN under SMALL_FRAC of P */
+			if (!trusted && o->accuracy > 0 &&
+			    w->err <= SMALL_FRAC * o->accuracy / 100 * fabs(w->cd))
+				trusted = 1;
+			else if (!trusted)
 				untrusted(o, w, c1 - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
 		} else {
 			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);

@@ -15,6 +15,11 @@
 #     of 0.31, 0.32, 0.34): err 0.038673, and with -accuracy 3 (3 % of a
 #     0.62 cd is 0.0186) status 3, every row over, where the group alone
 #     (0.013673) is status 0: the other group's err counts;
+#   - changes too small to judge: radii 0.31, 0.3101, 0.310205 (cd
+#     changes 2e-4 then 2.1e-4, order 0.07, not asymptotic), whose
+#     order-0.5 estimate 2e-4 / (sqrt 2 - 1) = 4.8e-4 um is 0.078 % of the
+#     cd: trusted (status 0, no note) at -accuracy 1, where it is under a
+#     tenth of P, refused (status 3, the note) at -accuracy 0.5;
 #   - -coarser-fine without -coarser, or without -accuracy, and -plus
 #     without -accuracy, are usage errors (2); -plus with a table without
 #     an err column is a one-line error (1).
@@ -61,6 +66,20 @@ measure $M -accuracy 3 -coarse c.tab -coarser cc.tab -coarser-fine cf.tab -plus 
 [ $st -eq 3 ] || fail "-plus: status $st, expected 3 (0.0387 over 3 % of 0.62): $(cat err.txt)"
 grep -q 'the estimated error of 3 cds is over 3 %' err.txt || fail "-plus: no count of the rows over: $(cat err.txt)"
 errs t.tab "$(awk 'BEGIN { print 1.25 * 0.02 / (2 ^ 1.5 - 1) + 0.025 }')" "-plus, the sum"
+
+tab 0.3101 6 s1.tab
+tab 0.310205 7 s2.tab
+st=0
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -accuracy 1 -coarse s1.tab -coarser s2.tab -o s.tab fine.plot 2>err.txt || st=$?
+[ $st -eq 0 ] || fail "small changes at -accuracy 1: status $st: $(cat err.txt)"
+[ ! -s err.txt ] || fail "small changes at -accuracy 1: a note: $(cat err.txt)"
+errs s.tab "$(awk 'BEGIN { print 0.0002 / (sqrt(2) - 1) }')" "small changes"
+st=0
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -accuracy 0.5 -coarse s1.tab -coarser s2.tab -o s.tab fine.plot 2>err.txt || st=$?
+[ $st -eq 3 ] || fail "small changes at -accuracy 0.5: status $st, expected 3"
+grep -q 'not in the asymptotic range' err.txt || fail "small changes at -accuracy 0.5: no note: $(cat err.txt)"
 
 for args in "-accuracy 3 -coarse c.tab -coarser-fine cf.tab" "-coarser-fine cf.tab" "-plus other.tab"; do
 	st=0
