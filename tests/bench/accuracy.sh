@@ -8,8 +8,10 @@
 # grids; "not reached" says so and the finest level stands in).  Prints
 # one line per case and engine: the grid, the three CDs, the largest
 # estimated err (% of its cd), the largest error against the reference
-# (%: |cd - ref| / ref, and in nm), the wall seconds; then the CDs of every
-# level each run solved.  Asserts nothing (the times and the references'
+# (%: |cd - ref| / ref, and in nm), the wall seconds and the CPU seconds
+# (user + system of every program the run started; the runs are nice'd,
+# ACCURACY_NICE, default 10); then the CDs of every level each run
+# solved.  Asserts nothing (the times and the references'
 # levels depend on the machine's load; tests/accuracy holds the
 # estimator, tests/sample3D/040 the driver).
 #
@@ -18,7 +20,9 @@
 # dense1.25-nobake dense1.0-nobake highna-m0.3 highna-p0.3 ca-lines
 # clear-lines-2; ACCURACY_ENGINES (default "fmm ray");
 # ACCURACY_CACHE=DIR keeps each run's directory there and reuses a
-# finished one (a run is finished when DIR/CASE-RUN/status exists).
+# finished one (a run is finished when DIR/CASE-RUN/status exists);
+# ACCURACY_REF, the reference's -accuracy (default 0.2; none: no
+# reference run, no "vs ref").
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
