@@ -109,8 +109,9 @@ vsref() {
 }
 # maxerr TABLE: the err column's largest value over its cd, percent
 maxerr() { awk '!/^#/ && $2 > 0 { e = 100 * $NF / $2; if (e > m) m = e } END { printf "%.2f\n", m }' "$1"; }
-# last DIR: the table of the finest level DIR solved
-last() { ls "$1"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); split(g, n, "x")
+# last DIR: the table of the finest level DIR solved (not a group's
+# estimate, NXxNYxNZ.xy.dat or .z.dat)
+last() { ls "$1"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); if (g ~ /\./) next; split(g, n, "x")
 	v = n[1] * n[2] * n[3]; if (v > best) { best = v; f = $0 } } END { print f }'; }
 grid() { basename "$1" .dat; }
 note() { # note DIR: what the status says
@@ -152,7 +153,7 @@ for c in ${ACCURACY_CASES:-car-arf contact-bake contact-nobake dense1.25-bake de
 	done
 	# every level of every run
 	for r in ref ${ACCURACY_ENGINES:-fmm ray}; do
-		ls "$tmp/$c-$r"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); split(g, n, "x")
+		ls "$tmp/$c-$r"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); if (g ~ /\./) next; split(g, n, "x")
 			print n[1] * n[2] * n[3], $0 }' | sort -n | while read -r _ t; do
 			printf '%-16s %-4s %-12s %-30s %7s\n' "$c" "$r:" "$(grid "$t")" "$(cds "$t")" \
 				"$(head -n 1 "$t" | grep -q ' err$' && maxerr "$t")"
