@@ -28,6 +28,9 @@
  *     estimate is under a tenth of P % of the cd (SMALL_FRAC).
  * Changes both under NOISE_REL of the cd are below anything -accuracy
  * can ask and count as converged (err the two-solve estimate).
+ * An earlier change between two solves that both lack the feature (cd
+ * 0: a hole not yet open at that height) says nothing of the order: such
+ * a row gets the two-table estimate.
  * With two tables the order cannot be observed: p is -order's, by default
  * 1, the lowest in the chain (first-order upwind differences of fast
  * marching; the image and the rates are interpolated linearly, second
@@ -202,8 +205,14 @@ int accuracy_estimate(const struct options *o, struct result *r)
 	for (int i = 0; i < r->nrows; i++) {
 		struct row *w = &r->rows[i];
 		int trusted = 1;
-		if (o->coarser) {
-			double p, c1 = coarser_fine_cd(&c, cfp, i);
+		double c1 = o->coarser ? coarser_fine_cd(&c, cfp, i) : 0;
+		if (o->coarser && c1 == 0 && cc.rows[i].cd == 0 && c.rows[i].cd != 0) {
+			/* the earlier change is between two solves without the
+			 * feature: it says nothing of the order, and the
+			 * estimate is the two-solve one */
+			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);
+		} else if (o->coarser) {
+			double p;
 			/* the changes alone enter: cd1 - cd2 is c1 - cd(-coarser) */
 			trusted = three_levels(w->cd, c.rows[i].cd,
 					       c.rows[i].cd - (c1 - cc.rows[i].cd), o->ratio,

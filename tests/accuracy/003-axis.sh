@@ -20,6 +20,12 @@
 #     order-0.5 estimate 2e-4 / (sqrt 2 - 1) = 4.8e-4 um is 0.078 % of the
 #     cd: trusted (status 0, no note) at -accuracy 1, where it is under a
 #     tenth of P, refused (status 3, the note) at -accuracy 0.5;
+#   - an earlier change between two solves without the feature (cd 0 in
+#     both: a hole not yet open there) says nothing of the order: this
+#     solve 0.31, -coarse 0.32, -coarser and -coarser-fine 0: the
+#     two-solve estimate |e2| / (2 - 1) = 0.02, trusted (status 0 at
+#     -accuracy 5, no note), where three levels would see changes that
+#     grow (0, then 0.02) and refuse it;
 #   - -coarser-fine without -coarser, or without -accuracy, and -plus
 #     without -accuracy, are usage errors (2); -plus with a table without
 #     an err column is a one-line error (1).
@@ -80,6 +86,16 @@ st=0
 measure $M -accuracy 0.5 -coarse s1.tab -coarser s2.tab -o s.tab fine.plot 2>err.txt || st=$?
 [ $st -eq 3 ] || fail "small changes at -accuracy 0.5: status $st, expected 3"
 grep -q 'not in the asymptotic range' err.txt || fail "small changes at -accuracy 0.5: no note: $(cat err.txt)"
+
+# a table of the same heights without the feature
+awk '/^#/ { print; next } { print $1, 0, 0, 0, 0 }' c.tab >zero.tab
+st=0
+# shellcheck disable=SC2086 # M is a list of words on purpose
+measure $M -accuracy 5 -coarse c.tab -coarser zero.tab -coarser-fine zero.tab -o z.tab fine.plot \
+	2>err.txt || st=$?
+[ $st -eq 0 ] || fail "an earlier change without the feature: status $st: $(cat err.txt)"
+[ ! -s err.txt ] || fail "an earlier change without the feature: a note: $(cat err.txt)"
+errs z.tab 0.02 "an earlier change without the feature"
 
 for args in "-accuracy 3 -coarse c.tab -coarser-fine cf.tab" "-coarser-fine cf.tab" "-plus other.tab"; do
 	st=0
