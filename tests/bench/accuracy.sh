@@ -80,22 +80,25 @@ prun() {
 	d=$tmp/$c-$r
 	[ -s "$d/status" ] && return 0
 	rm -rf "$d" && mkdir -p "$d" && cd "$d" || return 1
-	s=$(date +%s) c0=$(cputime)
+	s=$(date +%s)
+	times >times0
 	st=0
 	nice -n "${ACCURACY_NICE:-10}" sample3D -q -if "$tmp/$c.in" -bf "$resist" -et "$et" -last \
 		-measure "$m" -accuracy "$acc" "$@" >table.txt 2>err.txt || st=$?
-	echo "$st $(($(date +%s) - s)) $(awk -v a="$c0" -v b="$(cputime)" 'BEGIN { printf "%.1f", b - a }')" >status
+	times >times1
+	echo "$st $(($(date +%s) - s)) $(awk -v a="$(cputime times0)" -v b="$(cputime times1)" 'BEGIN { printf "%.1f", b - a }')" >status
 	# the level tables stay; the large files go
 	rm -f rval.3D* curves.plot* image.cont image.stack ./*.ps mxyz.solid.3D
 	cd "$tmp" || return 1
 }
 
-# cputime: the user and system CPU seconds of this shell's finished
-# children (the shell's times)
+# cputime FILE: the user and system CPU seconds of the shell's finished
+# children in FILE, the output of the shell's times (run in the shell
+# itself: a command substitution's subshell has no children of its own)
 cputime() {
-	times | awk 'NR == 2 { n = split($1 " " $2, f, " "); t = 0
+	awk 'NR == 2 { n = split($1 " " $2, f, " "); t = 0
 		for (i = 1; i <= n; i++) { split(f[i], a, "m"); sub(/s$/, "", a[2]); t += 60 * a[1] + a[2] }
-		printf "%.2f\n", t }'
+		printf "%.2f\n", t }' "$1"
 }
 
 # cds TABLE: "cd10 cd50 cd90"
