@@ -367,7 +367,7 @@ acc_solve() { # acc_solve "NX NY NZ" ETCHOPTS, at focus $nomf, dose $nomd
 fem_accuracy_choose() {
 	if [ -z "$accuracy" ]; then
 		# -grid alone: etch's options scaled with the grid
-		[ -z "$fixgrid" ] || etchopts=$(acc_etchopts "$(acc_ratio "$grid" "$rgrid")")
+		[ -z "$fixgrid" ] || etchopts=$(acc_etchopts "$grid" "$rgrid")
 		return 0
 	fi
 	# shellcheck disable=SC2086 # the grid is three words on purpose
@@ -389,7 +389,12 @@ fem_accuracy_choose() {
 		# last table's err as if err = |change| / (r^p - 1) (measure's
 		# safety factor and fallbacks only lower it): the lowest over
 		# its cds, which the points' two-solve estimates assume
+		# (by axis, acc_prevg is one level below in both groups, a grid
+		# the nominal point may not have solved: then order 1, the
+		# lowest in the chain)
+		order=1
 		# shellcheck disable=SC2086 # the grid is three words on purpose
+		[ ! -s "$dir/accuracy/$(echo $cgrid | tr ' ' x).dat" ] ||
 		order=$(awk -v r="$(acc_ratio "$cgrid" "$grid")" 'NR == FNR { if (!/^#/) c[FNR] = $2; next }
 			!/^#/ && $NF > 0 { d = $2 - c[FNR]; if (d < 0) d = -d; if (d == 0) next
 				p = log(1 + d / $NF) / log(r); if (m == "" || p < m) m = p }
@@ -400,8 +405,8 @@ fem_accuracy_choose() {
 	fi
 	ratio=$(acc_ratio "$cgrid" "$grid")
 	# etch's options at the two grids (-seg and -dt scaled with them)
-	etchopts=$(acc_etchopts "$(acc_ratio "$grid" "$rgrid")")
-	cetchopts=$(acc_etchopts "$(acc_ratio "$cgrid" "$rgrid")")
+	etchopts=$(acc_etchopts "$grid" "$rgrid")
+	cetchopts=$(acc_etchopts "$cgrid" "$rgrid")
 }
 # fem_accuracy_rules F P: the rules of point P (focus directory F) for the
 # coarse solve, whose table measure compares the point's with

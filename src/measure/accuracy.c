@@ -22,16 +22,29 @@
  *   - opposite signs, the second change smaller: a damped oscillation
  *     about the limit, which then lies within |e2| of cd(h): err = |e2|;
  *   - otherwise (growing, or shrinking slower than ORDER_MIN) the levels
- *     are not in the asymptotic range: the row is refused whatever P
- *     (counted as over), with err the estimate at ORDER_MIN (not a
- *     bound: the real error may be larger) and a note on standard error.
+ *     are not in the asymptotic range: the row is refused (counted as
+ *     over), with err the estimate at ORDER_MIN (not a bound: the real
+ *     error may be larger) and a note on standard error, unless that
+ *     estimate is under a tenth of P % of the cd (SMALL_FRAC).
  * Changes both under NOISE_REL of the cd are below anything -accuracy
  * can ask and count as converged (err the two-solve estimate).
+ * An earlier change between two solves that both lack the feature (cd
+ * 0: a hole not yet open at that height) says nothing of the order: such
+ * a row gets the two-table estimate.
  * With two tables the order cannot be observed: p is -order's, by default
  * 1, the lowest in the chain (first-order upwind differences of fast
  * marching; the image and the rates are interpolated linearly, second
  * order), which of the orders 1 and 2 gives the larger estimate; fem
  * passes the order its nominal point showed over three solves.
+ *
+ * Refinement by axis (the drivers' -accuracy P): when the error is a sum
+ * of terms, one per group of axes (the image grid x-y; the points through
+ * the resist, z), C h_xy^p + D h_z^q, the change made by refining one
+ * group does not depend on the level of the other.  The two changes of
+ * one group may then come from solves at different levels of the other
+ * (-coarser-fine names the finer solve of the earlier change), and the
+ * estimate of the other group's error (its own table's err, -plus) is
+ * added to this one's.
  */
 #include "measure.h"
 #include "fmt_measure.h"
@@ -51,6 +64,12 @@ static const double SAFETY = 1.25;
 /* Changes under 1e-4 of the cd (0.01 %, a twentieth of the 0.2 % of the
  * references, docs/accuracy.md) are noise for every -accuracy asked. */
 static const double NOISE_REL = 1e-4;
+/* With P, a row whose solves are not in the asymptotic range but whose
+ * estimate at ORDER_MIN (2.4 times the last change) is under a tenth of
+ * P % of the cd is trusted: changes that small (a few 1e-4 of the cd) are
+ * at the level of the surface's own extraction and measurement, whose
+ * steadiness cannot be judged, and they matter to no P asked. */
+static const double SMALL_FRAC = 0.1;
 /* Two tables' heights agree to their printing resolution, 1e-6 um (a
  * height is printed rounded to it): a larger difference means another
  * resist thickness or other -at/-rel heights. */
@@ -158,25 +177,58 @@ static void untrusted(const struct options *o, const struct row *w, double e1, d
 	     e1, e2, why, w->err, ORDER_MIN);
 }
 
+/* The CD of row i of the coarser change's finer solve: -coarser-fine's
+ * table when given, else -coarse's. */
+static double coarser_fine_cd(const struct measure_table *c, const struct measure_table *cf,
+			      int i)
+{
+	return (cf ? cf : c)->rows[i].cd;
+}
+
 int accuracy_estimate(const struct options *o, struct result *r)
 {
-	struct measure_table c, cc;
+	struct measure_table c, cc, cf, pl;
 	read_same(o->coarse, o, r, &c);
 	if (o->coarser)
 		read_same(o->coarser, o, r, &cc);
+	if (o->coarser_fine)
+		read_same(o->coarser_fine, o, r, &cf);
+	if (o->plus) {
+		read_same(o->plus, o, r, &pl);
+		if (!pl.have_err) {
+			fmt_measure_free(&pl);
+			die("%s: no err column: -plus takes a table of measure -accuracy", o->plus);
+		}
+	}
+	const struct measure_table *cfp = o->coarser_fine ? &cf : NULL;
 	int over = 0;
 	for (int i = 0; i < r->nrows; i++) {
 		struct row *w = &r->rows[i];
 		int trusted = 1;
-		if (o->coarser) {
+		double c1 = o->coarser ? coarser_fine_cd(&c, cfp, i) : 0;
+		if (o->coarser && c1 == 0 && cc.rows[i].cd == 0 && c.rows[i].cd != 0) {
+			/* the earlier change is between two solves without the
+			 * feature: it says nothing of the order, and the
+			 * estimate is the two-solve one */
+			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);
+		} else if (o->coarser) {
 			double p;
-			trusted = three_levels(w->cd, c.rows[i].cd, cc.rows[i].cd, o->ratio,
+			/* the changes alone enter: cd1 - cd2 is c1 - cd(-coarser) */
+			trusted = three_levels(w->cd, c.rows[i].cd,
+					       c.rows[i].cd - (c1 - cc.rows[i].cd), o->ratio,
 					       o->ratio2, &w->err, &p);
-			if (!trusted)
-				untrusted(o, w, c.rows[i].cd - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
+			/* changes too small to judge their steadiness: their
+			 * estimate at ORDER_MIN under SMALL_FRAC of P */
+			if (!trusted && o->accuracy > 0 &&
+			    w->err <= SMALL_FRAC * o->accuracy / 100 * fabs(w->cd))
+				trusted = 1;
+			else if (!trusted)
+				untrusted(o, w, c1 - cc.rows[i].cd, w->cd - c.rows[i].cd, p);
 		} else {
 			w->err = fabs(w->cd - c.rows[i].cd) / (pow(o->ratio, o->order) - 1);
 		}
+		if (o->plus)
+			w->err += pl.rows[i].err;
 		if (o->accuracy > 0 && (!trusted || w->err > o->accuracy / 100 * w->cd))
 			over++;
 	}
@@ -184,5 +236,9 @@ int accuracy_estimate(const struct options *o, struct result *r)
 	fmt_measure_free(&c);
 	if (o->coarser)
 		fmt_measure_free(&cc);
+	if (o->coarser_fine)
+		fmt_measure_free(&cf);
+	if (o->plus)
+		fmt_measure_free(&pl);
 	return over;
 }

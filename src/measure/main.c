@@ -21,7 +21,8 @@ static const char usage[] =
 	"               (-hole X Y | -space X Y x|y | -line X Y x|y | -holes)\n"
 	"               [-ler [-psd file]] [-lcdu] [-o file] [-plot file] [-force]\n"
 	"               [-accuracy P|check -coarse table [-ratio r]\n"
-	"                [-coarser table [-ratio2 q]] [-order p]] surface.plot\n"
+	"                [-coarser table [-ratio2 q] [-coarser-fine table]]\n"
+	"                [-order p] [-plus table]] surface.plot\n"
 	"  -s set          the set (print time) to measure, from 1 in file order\n"
 	"                  (default: the last)\n"
 	"  -at z1,z2,...   heights, um (absolute, within the box's z range)\n"
@@ -56,8 +57,13 @@ static const char usage[] =
 	"  -coarser table  the table of a solve coarser still: the order is\n"
 	"                  observed from the three\n"
 	"  -ratio2 q       its grid spacing over -coarse's (default 2)\n"
+	"  -coarser-fine table  the finer solve of the coarser change, when it\n"
+	"                  is not -coarse's (refinement by axis: the change of\n"
+	"                  one axis solved at another level of the others)\n"
 	"  -order p        without -coarser, the order assumed (0.5 to 2,\n"
 	"                  default 1)\n"
+	"  -plus table     add that table's err (the estimate along the axes\n"
+	"                  not refined here) to each err\n"
 	"  -h, --help      this text\n";
 
 /* A comma-separated list of finite numbers. */
@@ -163,8 +169,10 @@ static const double RATIO_MIN = 1.01, RATIO_MAX = 100;
 static void parse_accuracy(struct args *a, struct options *o, const char *acc)
 {
 	if (!acc) {
-		if (o->coarse || o->coarser)
-			args_error(a, "%s goes with -accuracy", o->coarse ? "-coarse" : "-coarser");
+		if (o->coarse || o->coarser || o->coarser_fine || o->plus)
+			args_error(a, "%s goes with -accuracy",
+				   o->coarse ? "-coarse" : o->coarser ? "-coarser" :
+				   o->coarser_fine ? "-coarser-fine" : "-plus");
 		return;
 	}
 	o->have_accuracy = 1;
@@ -174,6 +182,8 @@ static void parse_accuracy(struct args *a, struct options *o, const char *acc)
 			   "check, found \"%.40s\"", acc);
 	if (!o->coarse)
 		args_error(a, "-accuracy needs -coarse (the table of the coarser solve)");
+	if (o->coarser_fine && !o->coarser)
+		args_error(a, "-coarser-fine needs -coarser (the coarse solve of that change)");
 }
 
 static void parse_options(int argc, char **argv, struct options *o)
@@ -198,6 +208,8 @@ static void parse_options(int argc, char **argv, struct options *o)
 		    args_str(&a, "-accuracy", &acc) || args_str(&a, "-coarse", &o->coarse) ||
 		    args_num(&a, "-ratio", RATIO_MIN, RATIO_MAX, &o->ratio) ||
 		    args_str(&a, "-coarser", &o->coarser) ||
+		    args_str(&a, "-coarser-fine", &o->coarser_fine) ||
+		    args_str(&a, "-plus", &o->plus) ||
 		    args_num(&a, "-ratio2", RATIO_MIN, RATIO_MAX, &o->ratio2) ||
 		    args_num(&a, "-order", ACCURACY_ORDER_MIN, ACCURACY_ORDER_MAX, &o->order) ||
 		    parse_feature(&a, o))

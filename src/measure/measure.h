@@ -36,6 +36,14 @@ struct options {
 	/* -coarser TABLE [-ratio2 Q]: a third solve, the order observed */
 	const char *coarser;    /* the table of the solve coarser than -coarse */
 	double ratio2;          /* coarser / coarse grid spacing (default 2) */
+	/* -coarser-fine TABLE: the coarser change is cd(TABLE) - cd(-coarser)
+	 * rather than cd(-coarse) - cd(-coarser): refinement by axis, where
+	 * the earlier change of one axis was solved at another level of the
+	 * others */
+	const char *coarser_fine;
+	/* -plus TABLE: its err column (the estimate along the other axes) is
+	 * added to each row's err */
+	const char *plus;
 	double order;           /* -order: assumed from two solves (default 1) */
 	const char *input;
 };

@@ -8,8 +8,10 @@
 # grids; "not reached" says so and the finest level stands in).  Prints
 # one line per case and engine: the grid, the three CDs, the largest
 # estimated err (% of its cd), the largest error against the reference
-# (%: |cd - ref| / ref, and in nm), the wall seconds; then the CDs of every
-# level each run solved.  Asserts nothing (the times and the references'
+# (%: |cd - ref| / ref, and in nm), the wall seconds and the CPU seconds
+# (user + system of every program the run started; the runs are nice'd,
+# ACCURACY_NICE, default 10); then the CDs of every level each run
+# solved.  Asserts nothing (the times and the references'
 # levels depend on the machine's load; tests/accuracy holds the
 # estimator, tests/sample3D/040 the driver).
 #
@@ -18,7 +20,9 @@
 # dense1.25-nobake dense1.0-nobake highna-m0.3 highna-p0.3 ca-lines
 # clear-lines-2; ACCURACY_ENGINES (default "fmm ray");
 # ACCURACY_CACHE=DIR keeps each run's directory there and reuses a
-# finished one (a run is finished when DIR/CASE-RUN/status exists).
+# finished one (a run is finished when DIR/CASE-RUN/status exists);
+# ACCURACY_REF, the reference's -accuracy (default 0.2; none: no
+# reference run, no "vs ref").
 set -u
 TOP=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-${BUILD:-build}}
@@ -77,13 +81,24 @@ prun() {
 	[ -s "$d/status" ] && return 0
 	rm -rf "$d" && mkdir -p "$d" && cd "$d" || return 1
 	s=$(date +%s)
+	times >times0
 	st=0
-	sample3D -q -if "$tmp/$c.in" -bf "$resist" -et "$et" -last -measure "$m" -accuracy "$acc" "$@" \
-		>table.txt 2>err.txt || st=$?
-	echo "$st $(($(date +%s) - s))" >status
+	nice -n "${ACCURACY_NICE:-10}" sample3D -q -if "$tmp/$c.in" -bf "$resist" -et "$et" -last \
+		-measure "$m" -accuracy "$acc" "$@" >table.txt 2>err.txt || st=$?
+	times >times1
+	echo "$st $(($(date +%s) - s)) $(awk -v a="$(cputime times0)" -v b="$(cputime times1)" 'BEGIN { printf "%.1f", b - a }')" >status
 	# the level tables stay; the large files go
 	rm -f rval.3D* curves.plot* image.cont image.stack ./*.ps mxyz.solid.3D
 	cd "$tmp" || return 1
+}
+
+# cputime FILE: the user and system CPU seconds of the shell's finished
+# children in FILE, the output of the shell's times (run in the shell
+# itself: a command substitution's subshell has no children of its own)
+cputime() {
+	awk 'NR == 2 { n = split($1 " " $2, f, " "); t = 0
+		for (i = 1; i <= n; i++) { split(f[i], a, "m"); sub(/s$/, "", a[2]); t += 60 * a[1] + a[2] }
+		printf "%.2f\n", t }' "$1"
 }
 
 # cds TABLE: "cd10 cd50 cd90"
@@ -97,8 +112,9 @@ vsref() {
 }
 # maxerr TABLE: the err column's largest value over its cd, percent
 maxerr() { awk '!/^#/ && $2 > 0 { e = 100 * $NF / $2; if (e > m) m = e } END { printf "%.2f\n", m }' "$1"; }
-# last DIR: the table of the finest level DIR solved
-last() { ls "$1"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); split(g, n, "x")
+# last DIR: the table of the finest level DIR solved (not a group's
+# estimate, NXxNYxNZ.xy.dat or .z.dat)
+last() { ls "$1"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); if (g ~ /\./) next; split(g, n, "x")
 	v = n[1] * n[2] * n[3]; if (v > best) { best = v; f = $0 } } END { print f }'; }
 grid() { basename "$1" .dat; }
 note() { # note DIR: what the status says
@@ -108,18 +124,21 @@ note() { # note DIR: what the status says
 	esac
 }
 
-printf '%-16s %-4s %-12s %-30s %7s %13s %6s\n' case run grid "cd 10/50/90 % (um)" "err(%)" "vs ref % nm" s
+printf '%-16s %-4s %-12s %-30s %7s %13s %6s %7s\n' case run grid "cd 10/50/90 % (um)" "err(%)" "vs ref % nm" s "cpu s"
 for c in ${ACCURACY_CASES:-car-arf contact-bake contact-nobake dense1.25-bake dense1.0-bake dense1.25-nobake dense1.0-nobake highna-m0.3 highna-p0.3 ca-lines clear-lines-2}; do
 	setcase "$c" || continue
-	prun "$c" ref 0.2 -method fmm
-	rd=$tmp/$c-ref
-	rt=$(last "$rd")
-	if [ -z "$rt" ]; then
-		echo "$c ref: failed: $(tail -n 1 "$rd/err.txt")"
-		continue
+	rt=""
+	if [ "${ACCURACY_REF:-0.2}" != none ]; then
+		prun "$c" ref "${ACCURACY_REF:-0.2}" -method fmm
+		rd=$tmp/$c-ref
+		rt=$(last "$rd")
+		if [ -z "$rt" ]; then
+			echo "$c ref: failed: $(tail -n 1 "$rd/err.txt")"
+			continue
+		fi
+		printf '%-16s %-4s %-12s %-30s %7s %13s %6s %7s%s\n' "$c" ref "$(grid "$rt")" "$(cds "$rt")" \
+			"$(maxerr "$rt")" - "$(cut -d' ' -f2 "$rd/status")" "$(cut -d' ' -f3 "$rd/status")" "$(note "$rd")"
 	fi
-	printf '%-16s %-4s %-12s %-30s %7s %13s %6s%s\n' "$c" ref "$(grid "$rt")" "$(cds "$rt")" \
-		"$(maxerr "$rt")" - "$(cut -d' ' -f2 "$rd/status")" "$(note "$rd")"
 	for e in ${ACCURACY_ENGINES:-fmm ray}; do
 		case $e in fmm) eo="-method fmm" ;; *) eo="-method ray -deloop" ;; esac
 		# shellcheck disable=SC2086 # eo is a list of words on purpose
@@ -131,12 +150,13 @@ for c in ${ACCURACY_CASES:-car-arf contact-bake contact-nobake dense1.25-bake de
 			echo "$c $e: failed: $(tail -n 1 "$d/err.txt")"
 			continue
 		fi
-		printf '%-16s %-4s %-12s %-30s %7s %13s %6s%s\n' "$c" "$e" "$(grid "$(last "$d")")" "$(cds "$t")" \
-			"$(maxerr "$t")" "$(vsref "$t" "$rt")" "$(cut -d' ' -f2 "$d/status")" "$(note "$d")"
+		printf '%-16s %-4s %-12s %-30s %7s %13s %6s %7s%s\n' "$c" "$e" "$(grid "$(last "$d")")" "$(cds "$t")" \
+			"$(maxerr "$t")" "$([ -n "$rt" ] && vsref "$t" "$rt" || echo -)" "$(cut -d' ' -f2 "$d/status")" \
+			"$(cut -d' ' -f3 "$d/status")" "$(note "$d")"
 	done
 	# every level of every run
 	for r in ref ${ACCURACY_ENGINES:-fmm ray}; do
-		ls "$tmp/$c-$r"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); split(g, n, "x")
+		ls "$tmp/$c-$r"/accuracy/*.dat 2>/dev/null | awk -F/ '{ g = $NF; sub(/\.dat$/, "", g); if (g ~ /\./) next; split(g, n, "x")
 			print n[1] * n[2] * n[3], $0 }' | sort -n | while read -r _ t; do
 			printf '%-16s %-4s %-12s %-30s %7s\n' "$c" "$r:" "$(grid "$t")" "$(cds "$t")" \
 				"$(head -n 1 "$t" | grep -q ' err$' && maxerr "$t")"
