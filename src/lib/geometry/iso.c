@@ -55,6 +55,23 @@ static double at(const struct grid *g, const int idx[3], double p[3], double *w)
 	return g->f[k];
 }
 
+/* Swaps the ends (value f, speed w) so that a has the lower value; 1 if
+ * it did.  The edge model is evaluated from that end, so that the
+ * tetrahedra sharing an edge, which may name its ends in either order,
+ * get the same point. */
+static int lower_first(double *fa, double *wa, double *fb, double *wb)
+{
+	if (!(*fb < *fa))
+		return 0;
+	double x = *fa;
+	*fa = *fb;
+	*fb = x;
+	x = *wa;
+	*wa = *wb;
+	*wb = x;
+	return 1;
+}
+
 /* The fraction of the way from a to b where f = level.  Without speeds
  * f is taken as linear along the edge.  With speeds (wa, wb > 0, linear
  * along the edge) f is taken as an arrival time: a locally plane front
@@ -67,15 +84,7 @@ double iso_crossing(double fa, double wa, double fb, double wb, double level)
 {
 	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
 		return (level - fa) / (fb - fa);
-	int flip = fb < fa;
-	if (flip) {
-		double x = fa;
-		fa = fb;
-		fb = x;
-		x = wa;
-		wa = wb;
-		wb = x;
-	}
+	int flip = lower_first(&fa, &wa, &fb, &wb);
 	double phi = (level - fa) / (fb - fa), lr = log(wb / wa);
 	if (fabs(lr) > 1e-12)
 		phi = expm1(phi * lr) / expm1(lr);
@@ -88,15 +97,8 @@ double iso_value_at(double fa, double wa, double fb, double wb, double s)
 {
 	if (!(wa > 0 && wb > 0 && isfinite(wa) && isfinite(wb)))
 		return fa + s * (fb - fa);
-	if (fb < fa) {
-		double x = fa;
-		fa = fb;
-		fb = x;
-		x = wa;
-		wa = wb;
-		wb = x;
+	if (lower_first(&fa, &wa, &fb, &wb))
 		s = 1 - s;
-	}
 	double lr = log(wb / wa), phi = s;
 	if (fabs(lr) > 1e-12)
 		phi = log1p(s * expm1(lr)) / lr;
