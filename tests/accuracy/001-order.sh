@@ -26,8 +26,7 @@
 #   - -coarser without -accuracy, -ratio2 or -order out of range: usage
 #     errors.
 . "$TOP/tests/lib/common.sh"
-synth() { awk -f "$TOP/tests/measure/synth.awk" -v kind=rev -v prof="$1 -0.7 $1 0 3 0" -v seed="$2"; }
-M="-rel 10,50,90 -hole 0 0"
+. "$TOP/tests/lib/cylinders.sh"
 # tables RF RC RCC: fine.plot and the tables c.tab, cc.tab of three cylinders
 tables() {
 	synth "$1" 1 >fine.plot
@@ -35,14 +34,6 @@ tables() {
 	synth "$3" 3 >cc.plot
 	# shellcheck disable=SC2086 # M is a list of words on purpose
 	measure $M -o c.tab c.plot && measure $M -o cc.tab cc.plot || fail "measure the coarse solves"
-}
-# errs TABLE WANT: every row's err is WANT within 0.5 %
-errs() {
-	awk -v w="$2" 'NR == 1 { if ($0 != "# z cd area dx dy err") { print "header: " $0; bad = 1 }; next }
-		/^#/ { next }
-		{ n++; d = $6 - w; if (d < 0) d = -d
-		  if (d > 0.005 * w + 1e-9) { print "err " $6 ", expected " w; bad = 1 } }
-		END { if (n != 3) { print n " rows"; bad = 1 }; exit bad }' "$1" || fail "$3: $(cat "$1")"
 }
 # est P [measure options]: measure -accuracy P with both tables into e.tab; sets st
 est() {

@@ -30,21 +30,12 @@
 #     without -accuracy, are usage errors (2); -plus with a table without
 #     an err column is a one-line error (1).
 . "$TOP/tests/lib/common.sh"
-synth() { awk -f "$TOP/tests/measure/synth.awk" -v kind=rev -v prof="$1 -0.7 $1 0 3 0" -v seed="$2"; }
-M="-rel 10,50,90 -hole 0 0"
+. "$TOP/tests/lib/cylinders.sh"
 # tab R SEED NAME: the table of a cylinder of radius R
 tab() {
 	synth "$1" "$2" >s.plot
 	# shellcheck disable=SC2086 # M is a list of words on purpose
 	measure $M -o "$3" s.plot || fail "measure radius $1"
-}
-# errs TABLE WANT WHAT: every row's err is WANT within 0.5 %
-errs() {
-	awk -v w="$2" 'NR == 1 { if ($0 != "# z cd area dx dy err") { print "header: " $0; bad = 1 }; next }
-		/^#/ { next }
-		{ n++; d = $6 - w; if (d < 0) d = -d
-		  if (d > 0.005 * w + 1e-9) { print "err " $6 ", expected " w; bad = 1 } }
-		END { if (n != 3) { print n " rows"; bad = 1 }; exit bad }' "$1" || fail "$3: $(cat "$1")"
 }
 synth 0.31 1 >fine.plot
 tab 0.32 2 c.tab
