@@ -160,6 +160,17 @@ static int span_ok(struct span *sp, int a, int b)
 	return 1;
 }
 
+/* Tests the span of w nodes below node b: on success it is the longest
+ * known good, with its estimate; otherwise the shortest known bad. */
+static void try_span(struct span *sp, int b, int w, int *good, int *bad, double *est)
+{
+	if (span_ok(sp, b - w, b)) {
+		*good = w;
+		*est = sp->est;
+	} else
+		*bad = w;
+}
+
 struct fmm *fmm_levels(const struct fmm *f, double t, double tmax, double err, double **zl,
 		       double *used)
 {
@@ -181,32 +192,15 @@ struct fmm *fmm_levels(const struct fmm *f, double t, double tmax, double err, d
 			break;
 		int good = 1, bad = 0;      /* spans known to pass / to fail (0: none) */
 		double est = 0;             /* the estimate of span good */
-		for (int s = 2; s <= maxspan && !bad; s *= 2) {
-			int w = s < b ? s : b;
-			if (span_ok(&sp, b - w, b)) {
-				good = w;
-				est = sp.est;
-			} else
-				bad = w;
-			if (w == b)
+		int lim = maxspan < b ? maxspan : b;
+		for (int s = 2; maxspan >= 2 && !bad; s *= 2) {
+			int w = s < lim ? s : lim;
+			try_span(&sp, b, w, &good, &bad, &est);
+			if (w == lim)
 				break;
 		}
-		if (!bad && good < b && good < maxspan) {
-			int w = maxspan < b ? maxspan : b;
-			if (span_ok(&sp, b - w, b)) {
-				good = w;
-				est = sp.est;
-			} else
-				bad = w;
-		}
-		while (bad && bad - good > 1) {
-			int mid = good + (bad - good) / 2;
-			if (span_ok(&sp, b - mid, b)) {
-				good = mid;
-				est = sp.est;
-			} else
-				bad = mid;
-		}
+		while (bad && bad - good > 1)
+			try_span(&sp, b, good + (bad - good) / 2, &good, &bad, &est);
 		b -= good;
 		*used = fmax(*used, est);
 	}
